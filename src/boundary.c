@@ -1,0 +1,108 @@
+/*
+** boundary.c - domain sides and driven bodies, on the updated momentum.
+**
+** A wall side acts on the nodes of its grid line (and any ghost nodes
+** beyond it) with the exact normal of the side.  With v_w the wall's
+** velocity and n the side's outward normal, a node of mass m and momentum
+** q approaches the wall when dn = (q - m v_w).n > 0; the normal part is
+** then removed and the tangential part reduced by mu dn (Coulomb; removed
+** if smaller).  With the separation check the wall acts only once the
+** material reaches the wall line (reach.c).  The wall's impulse c does
+** work c.v_w on the material.
+**
+** A driven body's field is given its prescribed velocity at every node
+** it owns alone; at shared nodes contact.c does it.  The impulse needed
+** is work done by the drive.
+*/
+#include <math.h>
+#include "sim.h"
+
+/* one node (or slot) of mass m against side k; returns the impulse */
+static void wall_node(sim *s, const side *sd, int d, double sign, double m,
+                      double *const mom[DIM], size_t i, int account,
+                      double *imp) {
+  double dp[DIM], dn, tt = 0, w = 0;
+  int e;
+  for (e = 0; e < DIM; e++) {
+    dp[e] = mom[e][i] - m * sd->v[e];
+    imp[e] = 0;
+  }
+  dn = sign * dp[d];
+  if (!(dn > 0)) return;
+  imp[d] = -sign * dn;
+  for (e = 0; e < DIM; e++)
+    if (e != d) tt += dp[e] * dp[e];
+  tt = sqrt(tt);
+  for (e = 0; e < DIM; e++) {
+    if (e == d) continue;
+    if (tt > sd->mu * dn) imp[e] = -sd->mu * dn * dp[e] / tt;
+    else imp[e] = -dp[e];
+  }
+  if (account) {
+    double t2 = tt > sd->mu * dn ? tt - sd->mu * dn : 0;
+    s->e.friction += (tt * tt - t2 * t2) / (2 * m);
+  }
+  for (e = 0; e < DIM; e++) {
+    mom[e][i] += imp[e];
+    w += imp[e] * sd->v[e];
+  }
+  if (account) s->e.boundary += w;
+}
+
+static void wall_line(sim *s, int k, int line, int remap) {
+  grid *g = &s->g;
+  side *sd = &s->sides[k];
+  int d = k / 2, o = 1 - d, j;
+  double sign = (k & 1) ? 1.0 : -1.0;
+  double *const *mom = remap ? g->p : g->q;
+  double *const *smom = remap ? g->sp : g->sq;
+  for (j = 0; j < g->n[o]; j++) {
+    int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;
+    double imp[DIM];
+    int e;
+    if (g->m[n] <= s->mcut) continue;
+    if (s->gap_check && sd->ext[j] < 0) continue;
+    if (g->head[n] < 0) {
+      wall_node(s, sd, d, sign, g->m[n], mom, (size_t)n, !remap, imp);
+      continue;
+    }
+    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
+      if (g->sm[sl] <= s->mcut) continue;
+      wall_node(s, sd, d, sign, g->sm[sl], smom, (size_t)sl, !remap, imp);
+      for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
+    }
+  }
+}
+
+static void driven(sim *s, int remap) {
+  grid *g = &s->g;
+  double *const *mom = remap ? g->p : g->q;
+  double w = 0;
+  size_t n;
+  int d;
+  for (n = 0; n < g->nnodes; n++) {
+    int32_t f = g->owner[n], b;
+    if (f < 0 || g->head[n] >= 0 || (b = s->fdriven[f]) < 0) continue;
+    for (d = 0; d < DIM; d++) {
+      double c = g->m[n] * s->bodies[b].vdrive[d] - mom[d][n];
+      mom[d][n] += c;
+      w += c * s->bodies[b].vdrive[d];
+    }
+  }
+  if (!remap) s->e.boundary += w;
+}
+
+void boundary_apply(sim *s, int remap) {
+  grid *g = &s->g;
+  int k, any = 0;
+  for (k = 0; k < s->nbody; k++) any |= s->bodies[k].driven;
+  if (any) driven(s, remap);
+  for (k = 0; k < NSIDES; k++) {
+    int d = k / 2, line, first, last;
+    if (s->sides[k].kind != SIDE_WALL) continue;
+    /* the wall line and the ghost nodes beyond it */
+    if (k & 1) { first = g->pad + g->cells[d]; last = g->n[d] - 1; }
+    else { first = 0; last = g->pad; }
+    for (line = first; line <= last; line++) wall_line(s, k, line, remap);
+  }
+}

@@ -1,0 +1,135 @@
+/*
+** contact.c - multi-velocity-field contact at shared nodes.
+**
+** Normals.  With g_r = sum_p m_p grad S_ip over the particles of field r
+** and G = sum_r g_r, the outward unit normal of body r is
+**   n_r = -(2 g_r - G) / |2 g_r - G|
+** With two fields this is -(g_A - g_B)/|.|, so n_B = -n_A exactly: both
+** sides see one interface.
+**
+** The rule (after the grid momentum update, on q = p + dt f):
+**   v_cm = sum q_r / sum m_r (a driven body's velocity replaces it)
+**   dp_r = q_r - m_r v_cm, dn = dp_r . n_r
+** Field r is in contact when it approaches (dn > 0: after this step's
+** forces, compressive tractions included, it would move into the other
+** material) and, with the separation check on, the surfaces touch
+** (reach.c).  Then the normal part of dp_r is removed and the tangential
+** part t is reduced by mu dn (Coulomb), or removed if |t| <= mu dn
+** (stick).  The corrections are made to sum to zero (mass-weighted
+** residual), so the node's total momentum is conserved to round-off;
+** with two fields the residual is round-off itself.
+**
+** Friction work: the kinetic energy of tangential relative motion removed,
+** (|t|^2 - |t'|^2) / (2 m_r), summed over fields.
+*/
+#include <math.h>
+#include "sim.h"
+
+#define MAXSLOTS 64
+
+void contact_normals(sim *s) {
+  grid *g = &s->g;
+  size_t k;
+  for (k = 0; k < g->nshared; k++) {
+    int32_t n = g->shared[k], sl;
+    double G[DIM] = {0};
+    int d;
+    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
+      for (d = 0; d < DIM; d++) G[d] += g->sg[d][sl];
+    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
+      double v[DIM], len = 0;
+      for (d = 0; d < DIM; d++) {
+        v[d] = G[d] - 2.0 * g->sg[d][sl];
+        len += v[d] * v[d];
+      }
+      len = sqrt(len);
+      for (d = 0; d < DIM; d++) g->sn[d][sl] = len > 0 ? v[d] / len : 0.0;
+    }
+  }
+}
+
+static void node(sim *s, int32_t n, double *const mom[DIM],
+                 double *const smom[DIM], int account) {
+  grid *g = &s->g;
+  double c[MAXSLOTS][DIM], csum[DIM] = {0}, vref[DIM], M = g->m[n];
+  int32_t sl, slots[MAXSLOTS], drv = -1;
+  int ns = 0, k, d;
+  if (M <= s->mcut) return;
+  for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl]) {
+    slots[ns++] = sl;
+    if (s->fdriven[g->sfield[sl]] >= 0 && drv < 0) drv = sl;
+  }
+  if (drv >= 0) {
+    const body *b = &s->bodies[s->fdriven[g->sfield[drv]]];
+    for (d = 0; d < DIM; d++) vref[d] = b->vdrive[d];
+  } else
+    for (d = 0; d < DIM; d++) vref[d] = mom[d][n] / M;
+  for (k = 0; k < ns; k++) {
+    double dp[DIM], t[DIM], dn = 0, tt = 0, mr, mu, other = -1e300, mo = -1;
+    int32_t of = -1;
+    int j;
+    sl = slots[k];
+    mr = g->sm[sl];
+    for (d = 0; d < DIM; d++) c[k][d] = 0;
+    if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || mr <= s->mcut) continue;
+    for (d = 0; d < DIM; d++) {
+      dp[d] = smom[d][sl] - mr * vref[d];
+      dn += dp[d] * g->sn[d][sl];
+    }
+    if (!(dn > 0)) continue;
+    /* the partner: the heaviest other field here; its reach for the gap */
+    for (j = 0; j < ns; j++) {
+      int32_t o = slots[j];
+      if (o == sl) continue;
+      if (g->sext[o] > other) other = g->sext[o];
+      if (g->sm[o] > mo) { mo = g->sm[o]; of = g->sfield[o]; }
+    }
+    if (s->gap_check && g->sext[sl] + other < 0) continue;
+    mu = drv >= 0 ? sim_law(s, g->sfield[sl], g->sfield[drv])
+                  : sim_law(s, g->sfield[sl], of);
+    for (d = 0; d < DIM; d++) {
+      t[d] = dp[d] - dn * g->sn[d][sl];
+      tt += t[d] * t[d];
+      c[k][d] = -dn * g->sn[d][sl];
+    }
+    tt = sqrt(tt);
+    if (tt > mu * dn) { /* slides: friction mu dn against the slip */
+      double r = mu * dn / tt;
+      for (d = 0; d < DIM; d++) c[k][d] -= r * t[d];
+      if (account) s->e.friction += (tt * tt - (tt - mu * dn) * (tt - mu * dn)) / (2 * mr);
+    } else { /* sticks */
+      for (d = 0; d < DIM; d++) c[k][d] -= t[d];
+      if (account) s->e.friction += tt * tt / (2 * mr);
+    }
+    for (d = 0; d < DIM; d++) csum[d] += c[k][d];
+  }
+  if (drv >= 0) { /* the driven body keeps its velocity and does work */
+    double cd[DIM], w = 0;
+    for (d = 0; d < DIM; d++) {
+      cd[d] = g->sm[drv] * vref[d] - smom[d][drv];
+      smom[d][drv] += cd[d];
+      mom[d][n] += cd[d];
+      w += (cd[d] + csum[d]) * vref[d];
+    }
+    if (account) s->e.boundary += w;
+    for (k = 0; k < ns; k++)
+      for (d = 0; d < DIM; d++) {
+        smom[d][slots[k]] += c[k][d];
+        mom[d][n] += c[k][d];
+      }
+    return;
+  }
+  /* momentum-conserving: remove the residual in proportion to mass */
+  for (k = 0; k < ns; k++) {
+    double f = g->sm[slots[k]] / M;
+    for (d = 0; d < DIM; d++) smom[d][slots[k]] += c[k][d] - f * csum[d];
+  }
+}
+
+void contact_apply(sim *s, int remap) {
+  grid *g = &s->g;
+  double *const *mom = remap ? g->p : g->q;
+  double *const *smom = remap ? g->sp : g->sq;
+  size_t k;
+  for (k = 0; k < g->nshared; k++) node(s, g->shared[k], mom, smom, !remap);
+}

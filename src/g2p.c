@@ -1,0 +1,186 @@
+/*
+** g2p.c - grid to particles, each particle reading its own field.
+**   v_p <- flip (v_p + sum_i S_ip dv_i) + (1 - flip) sum_i S_ip vL_i
+**   x_p <- x_p + dt sum_i S_ip vL_i
+**   L_p  = sum_i v_i (x) grad S_ip
+** with v_i = vL_i (USL) or, for MUSL, the velocities of the particles'
+** updated momenta mapped back to the grid (p2g_momentum), which are
+** mass-weighted averages of particle velocities and so bounded even at
+** nearly empty nodes.  The pass that moves the particles also sums the
+** kinetic energy and momenta, wraps periodic positions, marks particles
+** that left the domain, and records each particle's cell for the sort.
+*/
+#include <math.h>
+#include "sim.h"
+#include "stencil.h"
+
+typedef struct sums {
+  double ke, mom[DIM], am, v2max;
+  size_t out;
+} sums;
+
+/* after the move: wrap, domain check, cell, sums */
+STENCIL_INLINE void settle(sim *s, size_t i, sums *u) {
+  const grid *g = &s->g;
+  particles *ps = &s->ps;
+  double m = ps->m[i], v2 = 0;
+  int32_t cell = 0, stride = 1;
+  int d;
+  for (d = 0; d < DIM; d++) {
+    double x = ps->x[d][i];
+    int c;
+    if (g->periodic[d]) {
+      double L = g->hi[d] - g->lo[d];
+      if (x >= g->hi[d]) x -= L;
+      else if (x < g->lo[d]) x += L;
+      ps->x[d][i] = x;
+    }
+    c = (int)floor((x - g->lo[d]) * g->inv_h);
+    if (!(x >= g->lo[d] && x < g->hi[d]) || c < 0 || c >= g->cells[d]) {
+      cell = -1;
+      stride = 0;
+    }
+    if (c >= g->cells[d]) c = g->cells[d] - 1;
+    cell += stride * c;
+    stride *= g->cells[d];
+    v2 += ps->v[d][i] * ps->v[d][i];
+    u->mom[d] += m * ps->v[d][i];
+  }
+  if (cell < 0) u->out++;
+  ps->cell[i] = cell;
+  u->ke += 0.5 * m * v2;
+  if (v2 > u->v2max) u->v2max = v2;
+#if DIM == 2
+  u->am += m * (ps->x[0][i] * ps->v[1][i] - ps->x[1][i] * ps->v[0][i]);
+#endif
+}
+
+static void finish(sim *s, const sums *u) {
+  int d;
+  s->e.kinetic = u->ke;
+  for (d = 0; d < DIM; d++) s->e.mom[d] = u->mom[d];
+  s->e.angmom = u->am;
+  s->vmax = sqrt(u->v2max);
+  s->nout = u->out;
+}
+
+/* full: USL (move + gradient); otherwise velocities only (MUSL pass 1) */
+STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
+                             const int full) {
+  const grid *g = &s->g;
+  particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  const double dt = s->dt, flip = s->flip, pic = 1.0 - flip;
+  stencil st;
+  sums u = {0};
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
+    double vx = 0, vy = 0, ax = 0, ay = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
+    const body *b = &bd[ps->body[i]];
+    int k;
+    stencil_eval(g, kind, x, s->lp, &st);
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      double w = st.w[k], qx, qy, fx, fy;
+      if (shared && g->head[n] >= 0) {
+        int32_t sl = grid_slot(g, n, b->field);
+        qx = g->sq[0][sl]; qy = g->sq[1][sl];
+        fx = g->sf[0][sl]; fy = g->sf[1][sl];
+      } else {
+        qx = g->q[0][n]; qy = g->q[1][n];
+        fx = g->f[0][n]; fy = g->f[1][n];
+      }
+      vx += w * qx; vy += w * qy;
+      ax += w * fx; ay += w * fy;
+      if (full) {
+        double dx = st.dw[0][k], dy = st.dw[1][k];
+        l00 += qx * dx; l01 += qx * dy;
+        l10 += qy * dx; l11 += qy * dy;
+      }
+    }
+    if (b->driven) {
+      ps->v[0][i] = b->vdrive[0];
+      ps->v[1][i] = b->vdrive[1];
+    } else {
+      ps->v[0][i] = flip * (ps->v[0][i] + ax) + pic * vx;
+      ps->v[1][i] = flip * (ps->v[1][i] + ay) + pic * vy;
+    }
+    if (full) {
+      ps->L[0][i] = l00; ps->L[1][i] = l01;
+      ps->L[2][i] = l10; ps->L[3][i] = l11;
+      ps->x[0][i] = x[0] + dt * vx;
+      ps->x[1][i] = x[1] + dt * vy;
+      settle(s, i, &u);
+    }
+  }
+  if (full) finish(s, &u);
+}
+
+void g2p(sim *s) {
+  int shared = s->g.nshared > 0, full = s->update == UPDATE_USL;
+#define G2P(K)                                      \
+  if (shared) { if (full) g2p_kind(s, K, 1, 1); else g2p_kind(s, K, 1, 0); } \
+  else { if (full) g2p_kind(s, K, 0, 1); else g2p_kind(s, K, 0, 0); }
+  switch (s->shape) {
+  case SHAPE_GIMP: G2P(SHAPE_GIMP); break;
+  case SHAPE_BSPLINE2: G2P(SHAPE_BSPLINE2); break;
+  default: G2P(SHAPE_LINEAR);
+  }
+#undef G2P
+}
+
+/* MUSL pass 2: gradient from the remapped velocities (in p), move with vL */
+STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
+  const grid *g = &s->g;
+  particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  const double dt = s->dt;
+  stencil st;
+  sums u = {0};
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
+    double vx = 0, vy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
+    int32_t f = bd[ps->body[i]].field;
+    int k;
+    stencil_eval(g, kind, x, s->lp, &st);
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k], ux, uy, qx, qy;
+      if (shared && g->head[n] >= 0) {
+        int32_t sl = grid_slot(g, n, f);
+        ux = g->sp[0][sl]; uy = g->sp[1][sl];
+        qx = g->sq[0][sl]; qy = g->sq[1][sl];
+      } else {
+        ux = g->p[0][n]; uy = g->p[1][n];
+        qx = g->q[0][n]; qy = g->q[1][n];
+      }
+      vx += w * qx; vy += w * qy;
+      l00 += ux * dx; l01 += ux * dy;
+      l10 += uy * dx; l11 += uy * dy;
+    }
+    ps->L[0][i] = l00; ps->L[1][i] = l01;
+    ps->L[2][i] = l10; ps->L[3][i] = l11;
+    ps->x[0][i] = x[0] + dt * vx;
+    ps->x[1][i] = x[1] + dt * vy;
+    settle(s, i, &u);
+  }
+  finish(s, &u);
+}
+
+void g2p_remap(sim *s) {
+  int shared = s->g.nshared > 0;
+  switch (s->shape) {
+  case SHAPE_GIMP:
+    if (shared) remap_kind(s, SHAPE_GIMP, 1); else remap_kind(s, SHAPE_GIMP, 0);
+    break;
+  case SHAPE_BSPLINE2:
+    if (shared) remap_kind(s, SHAPE_BSPLINE2, 1);
+    else remap_kind(s, SHAPE_BSPLINE2, 0);
+    break;
+  default:
+    if (shared) remap_kind(s, SHAPE_LINEAR, 1);
+    else remap_kind(s, SHAPE_LINEAR, 0);
+  }
+}

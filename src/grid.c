@@ -1,0 +1,145 @@
+/*
+** grid.c - allocation and per-step reset of the background grid, and the
+** sparse per-field slots of shared nodes.
+*/
+#include <stdlib.h>
+#include <string.h>
+#include "grid.h"
+
+static int nodes_along(const double lo[DIM], const double hi[DIM], double h,
+                       int d, int periodic, int pad) {
+  int cells = (int)((hi[d] - lo[d]) / h + 0.5);
+  return periodic ? cells : cells + 1 + 2 * pad;
+}
+
+double grid_bytes(const double lo[DIM], const double hi[DIM], double h,
+                  int pad) {
+  double nodes = 1;
+  int d;
+  for (d = 0; d < DIM; d++) nodes *= nodes_along(lo, hi, h, d, 0, pad);
+  /* m, p, f, q per dimension, owner, head */
+  return nodes * (8.0 * (1 + 3 * DIM) + 8.0);
+}
+
+int grid_init(grid *g, const double lo[DIM], const double hi[DIM], double h,
+              const int periodic[DIM], int pad) {
+  int d;
+  memset(g, 0, sizeof *g);
+  g->h = h;
+  g->inv_h = 1.0 / h;
+  g->pad = pad;
+  g->nnodes = 1;
+  for (d = 0; d < DIM; d++) {
+    g->lo[d] = lo[d];
+    g->hi[d] = hi[d];
+    g->periodic[d] = periodic[d];
+    g->cells[d] = (int)((hi[d] - lo[d]) / h + 0.5);
+    g->n[d] = nodes_along(lo, hi, h, d, periodic[d], pad);
+    g->nnodes *= (size_t)g->n[d];
+  }
+  g->m = calloc(g->nnodes, sizeof(double));
+  g->owner = malloc(g->nnodes * sizeof(int32_t));
+  g->head = malloc(g->nnodes * sizeof(int32_t));
+  if (!g->m || !g->owner || !g->head) return -1;
+  for (d = 0; d < DIM; d++) {
+    g->p[d] = calloc(g->nnodes, sizeof(double));
+    g->f[d] = calloc(g->nnodes, sizeof(double));
+    g->q[d] = calloc(g->nnodes, sizeof(double));
+    if (!g->p[d] || !g->f[d] || !g->q[d]) return -1;
+  }
+  memset(g->owner, 0xff, g->nnodes * sizeof(int32_t));
+  memset(g->head, 0xff, g->nnodes * sizeof(int32_t));
+  return 0;
+}
+
+static void slots_free(grid *g) {
+  int d;
+  free(g->snext); free(g->sfield); free(g->snode); free(g->sm);
+  free(g->sext);
+  for (d = 0; d < DIM; d++) {
+    free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
+    free(g->sg[d]); free(g->sn[d]);
+  }
+}
+
+void grid_free(grid *g) {
+  int d;
+  free(g->m); free(g->owner); free(g->head); free(g->shared);
+  for (d = 0; d < DIM; d++) { free(g->p[d]); free(g->f[d]); free(g->q[d]); }
+  slots_free(g);
+  memset(g, 0, sizeof *g);
+}
+
+void grid_reset(grid *g, int musl) {
+  size_t n = g->nnodes * sizeof(double), k;
+  int d;
+  memset(g->m, 0, n);
+  for (d = 0; d < DIM; d++) {
+    memset(g->p[d], 0, n);
+    memset(g->f[d], 0, n);
+    if (musl) memset(g->q[d], 0, n);
+  }
+  memset(g->owner, 0xff, g->nnodes * sizeof(int32_t));
+  /* only shared nodes carry slot heads; clear just those */
+  for (k = 0; k < g->nshared; k++) g->head[g->shared[k]] = -1;
+  g->nshared = 0;
+  g->nslot = 0;
+}
+
+#define GROW(ptr, type, cap)                                \
+  do {                                                      \
+    void *np_ = realloc(ptr, (cap) * sizeof(type));         \
+    if (!np_) return -1;                                    \
+    ptr = np_;                                              \
+  } while (0)
+
+/* Slots grow geometrically: after the first steps of a run the pool is
+** large enough and no step allocates. */
+static int slots_grow(grid *g) {
+  size_t cap = g->slotcap ? 2 * g->slotcap : 1024;
+  int d;
+  GROW(g->snext, int32_t, cap); GROW(g->sfield, int32_t, cap);
+  GROW(g->snode, int32_t, cap); GROW(g->sm, double, cap);
+  GROW(g->sext, double, cap);
+  for (d = 0; d < DIM; d++) {
+    GROW(g->sp[d], double, cap); GROW(g->sf[d], double, cap);
+    GROW(g->sq[d], double, cap); GROW(g->sg[d], double, cap);
+    GROW(g->sn[d], double, cap);
+  }
+  g->slotcap = cap;
+  return 0;
+}
+
+static int32_t slot_new(grid *g, int32_t node, int32_t field) {
+  int32_t s;
+  int d;
+  if (g->nslot == g->slotcap && slots_grow(g)) return -1;
+  s = (int32_t)g->nslot++;
+  g->sfield[s] = field;
+  g->snode[s] = node;
+  g->snext[s] = g->head[node];
+  g->head[node] = s;
+  g->sm[s] = 0;
+  g->sext[s] = -1e300;
+  for (d = 0; d < DIM; d++) {
+    g->sp[d][s] = g->sf[d][s] = g->sq[d][s] = g->sg[d][s] = 0;
+    g->sn[d][s] = 0;
+  }
+  return s;
+}
+
+int32_t grid_slot_add(grid *g, int32_t node, int32_t field) {
+  int32_t s;
+  if (g->head[node] < 0) { /* becoming shared: the owner gets a slot too */
+    if (g->nshared == g->sharedcap) {
+      size_t cap = g->sharedcap ? 2 * g->sharedcap : 1024;
+      GROW(g->shared, int32_t, cap);
+      g->sharedcap = cap;
+    }
+    g->shared[g->nshared++] = node;
+    if (slot_new(g, node, g->owner[node]) < 0) return -1;
+  }
+  for (s = g->head[node]; s >= 0; s = g->snext[s])
+    if (g->sfield[s] == field) return s;
+  return slot_new(g, node, field);
+}

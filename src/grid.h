@@ -1,0 +1,77 @@
+/*
+** grid.h - the background grid.
+** Every node carries the centre-of-mass field (dense arrays).  Nodes
+** touched by particles of more than one velocity field also get one
+** slot per field (sparse, linked per node), so memory and time grow with
+** the length of interfaces, not with the number of bodies.
+**
+** During a step the dense and slot arrays hold, in turn:
+**   after p2g:    m, p (momentum), f (internal + external force)
+**   after solve:  f includes contact and wall impulses / dt, so that the
+**                 updated momentum is always p + dt f
+**   after finish: p -> vL (updated velocity), f -> dv (velocity change)
+*/
+#ifndef mvmpm_grid_h
+#define mvmpm_grid_h
+
+#include <stddef.h>
+#include <stdint.h>
+#include "dim.h"
+
+typedef struct grid {
+  int cells[DIM];      /* cells per dimension */
+  int periodic[DIM];
+  int pad;             /* ghost nodes beyond each non-periodic side */
+  int n[DIM];          /* stored nodes per dimension */
+  size_t nnodes;
+  double lo[DIM], hi[DIM];
+  double h, inv_h;
+  /* dense centre-of-mass field */
+  double *m, *p[DIM], *f[DIM];
+  double *q[DIM];      /* remapped momentum (MUSL) */
+  int32_t *owner;      /* first field seen at the node, -1 if none */
+  int32_t *head;       /* first slot of a shared node, -1 otherwise */
+  /* sparse slots, one per (shared node, field) */
+  size_t nslot, slotcap;
+  int32_t *snext, *sfield, *snode;
+  double *sm, *sp[DIM], *sf[DIM], *sq[DIM];
+  double *sg[DIM];     /* mass gradient, for normals */
+  double *sn[DIM];     /* outward unit normal of the field's body */
+  double *sext;        /* reach of the field's material along its normal */
+  /* list of shared nodes */
+  size_t nshared, sharedcap;
+  int32_t *shared;
+} grid;
+
+/* allocate for the given domain; 0 or -1 (out of memory) */
+int grid_init(grid *g, const double lo[DIM], const double hi[DIM], double h,
+              const int periodic[DIM], int pad);
+void grid_free(grid *g);
+/* bytes the grid needs before any slot, for refusing oversize scenes */
+double grid_bytes(const double lo[DIM], const double hi[DIM], double h,
+                  int pad);
+/* clear the dense arrays and the slot table for a new step */
+void grid_reset(grid *g, int musl);
+/* the slot of field f at node, creating it; -1 if out of memory */
+int32_t grid_slot_add(grid *g, int32_t node, int32_t field);
+/* the slot of field f at a shared node (must exist) */
+static inline int32_t grid_slot(const grid *g, int32_t node, int32_t field) {
+  int32_t s = g->head[node];
+  while (g->sfield[s] != field) s = g->snext[s];
+  return s;
+}
+/* node index along d of node coordinate i (already including pad),
+** wrapped if periodic; assumes i within one period */
+static inline int grid_wrap(const grid *g, int d, int i) {
+  if (g->periodic[d]) {
+    if (i < 0) i += g->n[d];
+    else if (i >= g->n[d]) i -= g->n[d];
+  }
+  return i;
+}
+/* physical coordinate of stored node index i along d */
+static inline double grid_x(const grid *g, int d, int i) {
+  return g->lo[d] + (i - (g->periodic[d] ? 0 : g->pad)) * g->h;
+}
+
+#endif

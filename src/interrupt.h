@@ -1,0 +1,21 @@
+/*
+** interrupt.h - Ctrl-C as a request, not a kill.  The handler only sets
+** a flag; the step loop polls it between steps, and running Lua code is
+** stopped through a debug hook (as the lua prompt does).
+*/
+#ifndef mvmpm_interrupt_h
+#define mvmpm_interrupt_h
+
+#include <signal.h>
+#include "lua.h"
+
+extern volatile sig_atomic_t interrupt_flag;
+
+/* install the SIGINT handler; L (may be NULL) gets the stop hook */
+void interrupt_install(lua_State *L);
+/* restore the default action (a second Ctrl-C then kills) */
+void interrupt_uninstall(void);
+static inline int interrupt_pending(void) { return interrupt_flag != 0; }
+static inline void interrupt_clear(void) { interrupt_flag = 0; }
+
+#endif

@@ -1,0 +1,171 @@
+/*
+** lcheck.c - checking scene tables with messages a user can act on.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "lcheck.h"
+
+static int distance(const char *a, const char *b) {
+  int la = (int)strlen(a), lb = (int)strlen(b), i, j, prev[64], cur[64];
+  if (la > 60 || lb > 60) return 99;
+  for (j = 0; j <= lb; j++) prev[j] = j;
+  for (i = 1; i <= la; i++) {
+    cur[0] = i;
+    for (j = 1; j <= lb; j++) {
+      int c = prev[j - 1] + (a[i - 1] != b[j - 1]);
+      if (prev[j] + 1 < c) c = prev[j] + 1;
+      if (cur[j - 1] + 1 < c) c = cur[j - 1] + 1;
+      cur[j] = c;
+    }
+    memcpy(prev, cur, sizeof(int) * (lb + 1));
+  }
+  return prev[lb];
+}
+
+const char *chk_suggest(const char *key, const char *const allowed[]) {
+  const char *best = NULL;
+  int bd = 99, k, lim = (int)strlen(key) / 3 + 1;
+  for (k = 0; allowed[k]; k++) {
+    int d = distance(key, allowed[k]);
+    if (d < bd) { bd = d; best = allowed[k]; }
+  }
+  return bd <= lim ? best : NULL;
+}
+
+static void listall(luaL_Buffer *b, const char *const allowed[]) {
+  int k;
+  for (k = 0; allowed[k]; k++) {
+    if (k) luaL_addstring(b, ", ");
+    luaL_addstring(b, allowed[k]);
+  }
+}
+
+void chk_keys(lua_State *L, int idx, const char *what,
+              const char *const allowed[]) {
+  idx = lua_absindex(L, idx);
+  lua_pushnil(L);
+  while (lua_next(L, idx)) {
+    int k, ok = 0;
+    lua_pop(L, 1);
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      const char *key = lua_tostring(L, -1);
+      for (k = 0; allowed[k]; k++)
+        if (strcmp(key, allowed[k]) == 0) { ok = 1; break; }
+      if (!ok) {
+        const char *s = chk_suggest(key, allowed);
+        luaL_Buffer b;
+        if (s)
+          luaL_error(L, "%s: unknown field '%s' (did you mean '%s'?)", what,
+                     key, s);
+        luaL_buffinit(L, &b);
+        listall(&b, allowed);
+        luaL_pushresult(&b);
+        luaL_error(L, "%s: unknown field '%s' (allowed: %s)", what, key,
+                   lua_tostring(L, -1));
+      }
+    } else if (lua_type(L, -1) == LUA_TNUMBER) {
+      /* positional entries are checked by the caller */
+    } else
+      luaL_error(L, "%s: field names must be strings", what);
+  }
+}
+
+static void range(char *buf, size_t n, double lo, double hi, int flags) {
+  const char *l = flags & CHK_OPENLO ? ">" : ">=";
+  const char *h = flags & CHK_OPENHI ? "<" : "<=";
+  if (lo == -HUGE_VAL && hi == HUGE_VAL) snprintf(buf, n, "finite");
+  else if (hi == HUGE_VAL) snprintf(buf, n, "%s %g", l, lo);
+  else if (lo == -HUGE_VAL) snprintf(buf, n, "%s %g", h, hi);
+  else
+    snprintf(buf, n, "in %s%g, %g%s", flags & CHK_OPENLO ? "(" : "[", lo, hi,
+             flags & CHK_OPENHI ? ")" : "]");
+}
+
+double chk_num(lua_State *L, int idx, const char *what, const char *key,
+               double def, double lo, double hi, int flags) {
+  double v;
+  char r[80];
+  int isnum;
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    if (flags & CHK_REQUIRED)
+      luaL_error(L, "%s: field '%s' is required", what, key);
+    return def;
+  }
+  v = lua_tonumberx(L, -1, &isnum);
+  if (!isnum)
+    luaL_error(L, "%s: field '%s' must be a number (got %s)", what, key,
+               luaL_typename(L, -1));
+  lua_pop(L, 1);
+  range(r, sizeof r, lo, hi, flags);
+  if (!isfinite(v) || v < lo || v > hi || ((flags & CHK_OPENLO) && v == lo) ||
+      ((flags & CHK_OPENHI) && v == hi))
+    luaL_error(L, "%s: field '%s' must be %s (got %g)", what, key, r, v);
+  if ((flags & CHK_INT) && v != floor(v))
+    luaL_error(L, "%s: field '%s' must be a whole number (got %g)", what, key,
+               v);
+  return v;
+}
+
+int chk_option(lua_State *L, int idx, const char *what, const char *key,
+               int def, const char *const opts[]) {
+  const char *s;
+  int k;
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) { lua_pop(L, 1); return def; }
+  if (lua_type(L, -1) != LUA_TSTRING)
+    luaL_error(L, "%s: field '%s' must be a string (got %s)", what, key,
+               luaL_typename(L, -1));
+  s = lua_tostring(L, -1);
+  for (k = 0; opts[k]; k++)
+    if (strcmp(s, opts[k]) == 0) { lua_pop(L, 1); return k; }
+  {
+    luaL_Buffer b;
+    const char *sug = chk_suggest(s, opts);
+    luaL_buffinit(L, &b);
+    listall(&b, opts);
+    luaL_pushresult(&b);
+    luaL_error(L, "%s: field '%s' must be one of %s (got '%s'%s%s%s)", what,
+               key, lua_tostring(L, -1), s, sug ? "; did you mean '" : "",
+               sug ? sug : "", sug ? "'?" : "");
+  }
+  return def;
+}
+
+int chk_bool(lua_State *L, int idx, const char *what, const char *key,
+             int def) {
+  int v;
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) { lua_pop(L, 1); return def; }
+  if (!lua_isboolean(L, -1))
+    luaL_error(L, "%s: field '%s' must be true or false (got %s)", what, key,
+               luaL_typename(L, -1));
+  v = lua_toboolean(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+void chk_vec(lua_State *L, int idx, const char *what, const char *key,
+             double *v, int n, int required) {
+  int k;
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    if (required) luaL_error(L, "%s: field '%s' is required", what, key);
+    return;
+  }
+  if (!lua_istable(L, -1) || luaL_len(L, -1) != n)
+    luaL_error(L, "%s: field '%s' must be a list of %d numbers", what, key, n);
+  for (k = 0; k < n; k++) {
+    int isnum;
+    lua_geti(L, -1, k + 1);
+    v[k] = lua_tonumberx(L, -1, &isnum);
+    if (!isnum || !isfinite(v[k]))
+      luaL_error(L, "%s: field '%s' entry %d must be a finite number", what,
+                 key, k + 1);
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+}

@@ -1,0 +1,35 @@
+/*
+** lcheck.h - checking scene tables.  Every error names the scene file
+** and line (luaL_error's position: the Lua line that made the call), the
+** object and field, and the allowed range, e.g.
+**   bounce.lua:12: sim: field 'cell' must be > 0 (got -0.1)
+**   bounce.lua:14: body: unknown field 'materal' (did you mean 'material'?)
+*/
+#ifndef mvmpm_lcheck_h
+#define mvmpm_lcheck_h
+
+#include "lua.h"
+#include "lauxlib.h"
+
+/* raise an error for every key of the table at idx not in allowed (NULL
+** terminated) */
+void chk_keys(lua_State *L, int idx, const char *what,
+              const char *const allowed[]);
+/* number field: def if absent; must lie in [lo, hi] (open ends if the
+** flags say so); int_only refuses fractions */
+enum { CHK_OPENLO = 1, CHK_OPENHI = 2, CHK_INT = 4, CHK_REQUIRED = 8 };
+double chk_num(lua_State *L, int idx, const char *what, const char *key,
+               double def, double lo, double hi, int flags);
+/* string field, one of the options (NULL terminated); returns its index */
+int chk_option(lua_State *L, int idx, const char *what, const char *key,
+               int def, const char *const opts[]);
+/* boolean field */
+int chk_bool(lua_State *L, int idx, const char *what, const char *key,
+             int def);
+/* vector field {x, y}: fills v (defaults kept if absent) */
+void chk_vec(lua_State *L, int idx, const char *what, const char *key,
+             double *v, int n, int required);
+/* the closest allowed word to key, or NULL if none is close */
+const char *chk_suggest(const char *key, const char *const allowed[]);
+
+#endif

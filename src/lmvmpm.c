@@ -1,0 +1,274 @@
+/*
+** lmvmpm.c - the "mvmpm" module: simulations, materials, shapes, scene
+** parameters, and loading scenes.
+**
+** Parameters: a scene declares its parameters with defaults,
+**   local P = mvmpm.params{friction = 0, cells = 8}
+** and --set name=value (or mvmpm.load's table) overrides them, converted
+** to the default's type.  Overrides live in the registry while a scene
+** loads, in "mvmpm.overrides"; names a scene declares collect in
+** "mvmpm.declared".
+*/
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "lauxlib.h"
+#include "lmvmpm.h"
+#include "lsim.h"
+#include "lualib.h"
+
+static void regtable(lua_State *L, const char *name) {
+  if (lua_getfield(L, LUA_REGISTRYINDEX, name) != LUA_TTABLE) {
+    lua_pop(L, 1);
+    lua_newtable(L);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, name);
+  }
+}
+
+void lmvmpm_override(lua_State *L, const char *name, const char *value) {
+  regtable(L, "mvmpm.overrides");
+  lua_pushstring(L, value);
+  lua_setfield(L, -2, name);
+  lua_pop(L, 1);
+}
+
+/* convert an override to the default's type */
+static void convert(lua_State *L, const char *name, int deftype) {
+  if (lua_type(L, -1) != LUA_TSTRING) return; /* from mvmpm.load: as given */
+  if (deftype == LUA_TNUMBER) {
+    if (!lua_stringtonumber(L, lua_tostring(L, -1)))
+      luaL_error(L, "--set %s=%s: parameter '%s' is a number", name,
+                 lua_tostring(L, -1), name);
+    lua_remove(L, -2);
+  } else if (deftype == LUA_TBOOLEAN) {
+    const char *s = lua_tostring(L, -1);
+    int b = strcmp(s, "true") == 0 ? 1 : strcmp(s, "false") == 0 ? 0 : -1;
+    if (b < 0)
+      luaL_error(L, "--set %s=%s: parameter '%s' is true or false", name, s, name);
+    lua_pop(L, 1);
+    lua_pushboolean(L, b);
+  }
+}
+
+/* mvmpm.params{name = default, ...} -> the values in force */
+static int params(lua_State *L) {
+  luaL_checktype(L, 1, LUA_TTABLE);
+  lua_settop(L, 1);
+  lua_newtable(L);
+  regtable(L, "mvmpm.overrides");
+  regtable(L, "mvmpm.declared");
+  lua_pushnil(L);
+  while (lua_next(L, 1)) {
+    const char *name;
+    int t = lua_type(L, -1);
+    if (lua_type(L, -2) != LUA_TSTRING)
+      luaL_error(L, "params: names must be strings");
+    name = lua_tostring(L, -2);
+    if (t != LUA_TNUMBER && t != LUA_TBOOLEAN && t != LUA_TSTRING)
+      luaL_error(L, "params: default of '%s' must be a number, boolean or string",
+                 name);
+    lua_pushboolean(L, 1);
+    lua_setfield(L, 4, name);              /* declared */
+    if (lua_getfield(L, 3, name) != LUA_TNIL) { /* overridden */
+      convert(L, name, t);
+      lua_remove(L, -2);
+    } else lua_pop(L, 1);
+    lua_setfield(L, 2, name);              /* key stays for lua_next */
+  }
+  lua_pop(L, 2);
+  return 1;
+}
+
+int lmvmpm_check_overrides(lua_State *L) {
+  regtable(L, "mvmpm.overrides");
+  regtable(L, "mvmpm.declared");
+  lua_pushnil(L);
+  while (lua_next(L, -3)) {
+    const char *name = lua_tostring(L, -2);
+    lua_pop(L, 1);
+    if (lua_getfield(L, -2, name) == LUA_TNIL) {
+      luaL_Buffer b;
+      int first = 1;
+      luaL_buffinit(L, &b);
+      lua_pushnil(L);
+      while (lua_next(L, -4)) {
+        lua_pop(L, 1);
+        if (!first) luaL_addstring(&b, ", ");
+        luaL_addstring(&b, lua_tostring(L, -1));
+        first = 0;
+      }
+      luaL_pushresult(&b);
+      lua_pushfstring(L, "--set %s: the scene declares no parameter '%s' "
+                         "(it declares: %s)", name, name,
+                      first ? "none" : lua_tostring(L, -1));
+      return -1;
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 2);
+  return 0;
+}
+
+static int traceback(lua_State *L) {
+  const char *msg = lua_tostring(L, 1);
+  luaL_traceback(L, L, msg ? msg : "(error object is not a string)", 1);
+  return 1;
+}
+
+static char *slurp(const char *path) {
+  FILE *f = fopen(path, "rb");
+  char *buf;
+  long n;
+  if (!f) return NULL;
+  if (fseek(f, 0, SEEK_END) || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET)) {
+    fclose(f);
+    return NULL;
+  }
+  buf = malloc((size_t)n + 1);
+  if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) { free(buf); buf = NULL; }
+  if (buf) buf[n] = 0;
+  fclose(f);
+  return buf;
+}
+
+int lmvmpm_load(lua_State *L, const char *path) {
+  char *src = slurp(path);
+  int base = lua_gettop(L);
+  if (!src) {
+    lua_pushfstring(L, "%s: cannot read the scene file", path);
+    return -1;
+  }
+  lua_pushstring(L, src);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
+  lua_pushstring(L, path);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.scene");
+  lua_pushnil(L);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.last");
+  lua_pushcfunction(L, traceback);
+  if (luaL_loadbuffer(L, src, strlen(src), lua_pushfstring(L, "@%s", path))) {
+    free(src);
+    lua_replace(L, base + 1);
+    lua_settop(L, base + 1);
+    return -1;
+  }
+  lua_remove(L, -2); /* the chunk name */
+  free(src);
+  if (lua_pcall(L, 0, 1, base + 1)) {
+    lua_replace(L, base + 1);
+    lua_settop(L, base + 1);
+    return -1;
+  }
+  if (!luaL_testudata(L, -1, LSIM_MT)) {
+    lua_pop(L, 1);
+    if (lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.last") == LUA_TNIL) {
+      lua_settop(L, base);
+      lua_pushfstring(L, "%s: the scene made no simulation (call mvmpm.sim{...})",
+                      path);
+      return -1;
+    }
+  }
+  lua_replace(L, base + 1);
+  lua_settop(L, base + 1);
+  {
+    lsim *ls = lua_touserdata(L, -1);
+    snprintf(ls->scene, sizeof ls->scene, "%s", path);
+  }
+  return 0;
+}
+
+/* mvmpm.load(path [, {name = value}]) -> the scene's simulation */
+static int load(lua_State *L) {
+  const char *path = luaL_checkstring(L, 1);
+  int top;
+  lua_settop(L, 2);
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides"); /* 3: saved */
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.declared");  /* 4: saved */
+  lua_newtable(L);
+  if (lua_istable(L, 2)) {
+    lua_pushnil(L);
+    while (lua_next(L, 2)) {
+      lua_pushvalue(L, -2);
+      lua_insert(L, -2);
+      lua_settable(L, 5);
+    }
+  }
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides");
+  lua_newtable(L);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.declared");
+  top = lua_gettop(L);
+  if (lmvmpm_load(L, path) || lmvmpm_check_overrides(L)) {
+    lua_pushvalue(L, 3);
+    lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides");
+    lua_pushvalue(L, 4);
+    lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.declared");
+    return lua_error(L);
+  }
+  lua_pushvalue(L, 3);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides");
+  lua_pushvalue(L, 4);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.declared");
+  (void)top;
+  return 1;
+}
+
+int luaopen_mvmpm(lua_State *L) {
+  static const luaL_Reg fns[] = {{"sim", lsim_new}, {"params", params},
+                                 {"load", load}, {NULL, NULL}};
+  int mod;
+  luaL_newlib(L, fns);
+  mod = lua_gettop(L);
+  lua_pushstring(L, MVMPM_VERSION);
+  lua_setfield(L, mod, "version");
+  lua_pushinteger(L, DIM);
+  lua_setfield(L, mod, "dim");
+  lsim_open(L);
+  lbody_open(L);
+  lmat_open(L, mod);
+  lshape_open(L, mod);
+  return 1;
+}
+
+/* lua/ beside the executable, or one level up (build trees) */
+void lmvmpm_setpath(lua_State *L, const char *argv0) {
+  char exe[PATH_MAX], dir[PATH_MAX], probe[PATH_MAX + 32];
+  const char *env = getenv("MVMPM_LUA");
+  ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
+  char *slash;
+  int up;
+  if (n <= 0) {
+    snprintf(exe, sizeof exe, "%s", argv0);
+    n = (ssize_t)strlen(exe);
+  }
+  exe[n] = 0;
+  lua_getglobal(L, "package");
+  for (up = 0; up < 2; up++) {
+    snprintf(dir, sizeof dir, "%s", exe);
+    slash = strrchr(dir, '/');
+    if (!slash) snprintf(dir, sizeof dir, ".");
+    else *slash = 0;
+    if (up) {
+      slash = strrchr(dir, '/');
+      if (slash) *slash = 0;
+    }
+    snprintf(probe, sizeof probe, "%s/lua/mvmpm", dir);
+    if (env || access(probe, F_OK) == 0) {
+      lua_getfield(L, -1, "path");
+      lua_pushfstring(L, "%s/?.lua;%s/?/init.lua;%s", env ? env : probe,
+                      env ? env : probe, lua_tostring(L, -1));
+      /* probe ends in /lua/mvmpm: trim to /lua */
+      if (!env) {
+        lua_pop(L, 1);
+        snprintf(probe, sizeof probe, "%s/lua", dir);
+        lua_pushfstring(L, "%s/?.lua;%s/?/init.lua;%s", probe, probe,
+                        lua_tostring(L, -1));
+      }
+      lua_setfield(L, -3, "path");
+      lua_pop(L, 1);
+      break;
+    }
+  }
+  lua_pop(L, 1);
+}

@@ -1,0 +1,25 @@
+/*
+** lmvmpm.h - the Lua module "mvmpm" and the scene loader the command
+** line and the verification scripts share.
+*/
+#ifndef mvmpm_lmvmpm_h
+#define mvmpm_lmvmpm_h
+
+#include "lua.h"
+
+#define MVMPM_VERSION "0.1.0"
+
+/* open the module (also as global 'mvmpm') and set package.path to the
+** project's lua/ directory found from the executable's location */
+int luaopen_mvmpm(lua_State *L);
+void lmvmpm_setpath(lua_State *L, const char *argv0);
+/* parameter overrides from the command line: name=value strings */
+void lmvmpm_override(lua_State *L, const char *name, const char *value);
+/* after loading: every override must name a declared parameter; returns
+** 0 or pushes an error message and returns -1 */
+int lmvmpm_check_overrides(lua_State *L);
+/* load and run a scene file: pushes its simulation; 0 or -1 with an
+** error message pushed */
+int lmvmpm_load(lua_State *L, const char *path);
+
+#endif

@@ -1,0 +1,83 @@
+/*
+** lsim.h - what the Lua bindings share: the simulation userdata and its
+** run state (callbacks, drives, output).  Lua objects the simulation
+** holds on to live in the userdata's user value, a table with fields
+**   mats    material userdata -> material index
+**   bodies  array of body userdata
+**   every   array of {fn=, time=|steps=, next=}
+**   drives  body index -> function(t) returning the velocity
+**   sidefn  side index -> function(t) returning the wall velocity
+*/
+#ifndef mvmpm_lsim_h
+#define mvmpm_lsim_h
+
+#include "lua.h"
+#include "lauxlib.h"
+#include "out_csv.h"
+#include "out_xdmf.h"
+#include "sim.h"
+
+#define LSIM_MT "mvmpm.sim"
+#define LBODY_MT "mvmpm.body"
+#define LMAT_MT "mvmpm.material"
+#define LSHAPE_MT "mvmpm.shape"
+
+typedef struct lsim {
+  sim s;
+  int ok;                 /* set-up succeeded */
+  /* lattice of seeding points: which body holds each (-1 none) */
+  int32_t *occ;
+  size_t nocc;
+  int fields_single;      /* every body on one field */
+  /* output */
+  char outdir[1024];
+  double out_every, out_next;
+  int out_enabled;
+  long csv_every;
+  csvout csv;
+  int csv_open;
+  xdmf_entry *snaps;
+  int nsnap, snapcap;
+  int progress;           /* live progress line (a terminal) */
+  char scene[512];        /* scene file, for messages and snapshots */
+  char units[32];
+  int drives, sidefns, nevery;
+} lsim;
+
+typedef struct lbody {
+  lsim *ls;
+  int idx;
+} lbody;
+
+/* lua_sim.c */
+lsim *lsim_check(lua_State *L, int idx);
+int lsim_new(lua_State *L);                 /* mvmpm.sim{...} */
+void lsim_open(lua_State *L);
+void lsim_uv(lua_State *L, int idx, const char *field); /* push uv.field */
+/* lua_body.c */
+int lbody_new(lua_State *L);                /* sim:body{...} */
+void lbody_open(lua_State *L);
+int lbody_push(lua_State *L, int simidx, int b);
+/* lua_material.c */
+void lmat_open(lua_State *L, int modidx);
+material *lmat_check(lua_State *L, int idx);
+/* lua_shape.c: regions bodies are seeded from */
+enum { SH_DISK, SH_ANNULUS, SH_RECT, SH_POLYGON, SH_REST, SH_FUNC };
+typedef struct lshape {
+  int kind;
+  double c[DIM], r, r0;      /* disk / annulus: centre, outer, inner radius */
+  double lo[DIM], hi[DIM];   /* bounding box (rect: the rectangle) */
+  int npts;                  /* polygon vertices, stored after the struct */
+  double pts[];
+} lshape;
+void lshape_open(lua_State *L, int modidx);
+lshape *lshape_check(lua_State *L, int idx);
+/* is (x) inside the shape at idx?  SH_FUNC calls the Lua function */
+int lshape_inside(lua_State *L, int idx, const lshape *sh, const double *x);
+double lshape_area(const lshape *sh);   /* < 0 if not known */
+/* run.c */
+int run_until(lua_State *L, int simidx, double t_end, long max_steps);
+int run_snapshot(lua_State *L, lsim *ls, const char *path);
+int run_close(lua_State *L, lsim *ls);
+
+#endif

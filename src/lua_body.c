@@ -1,0 +1,442 @@
+/*
+** lua_body.c - bodies: seeding particles from shapes or point lists,
+** and the body object's diagnostics.
+**
+** Seeding: every cell holds ppc^DIM points at the centres of its
+** sub-cells; a body takes the points inside its shape.  One lattice for
+** all bodies means "the rest" (binder) is simply the points no body
+** took, and overlapping bodies are detected exactly.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "diag.h"
+#include "lcheck.h"
+#include "lsim.h"
+
+static lbody *checkbody(lua_State *L, int idx) {
+  return luaL_checkudata(L, idx, LBODY_MT);
+}
+
+static int occ_init(lua_State *L, lsim *ls) {
+  size_t n = 1, k;
+  int d;
+  if (ls->occ) return 0;
+  for (d = 0; d < DIM; d++) n *= (size_t)ls->s.g.cells[d] * ls->s.ppc;
+  ls->occ = malloc(n * sizeof *ls->occ);
+  if (!ls->occ) return luaL_error(L, "body: out of memory for the seeding lattice");
+  for (k = 0; k < n; k++) ls->occ[k] = -1;
+  ls->nocc = n;
+  return 0;
+}
+
+/* material userdata at idx -> index in the simulation (added on first use) */
+static int matindex(lua_State *L, int simidx, int idx) {
+  lsim *ls = lsim_check(L, simidx);
+  material *m = lmat_check(L, idx);
+  int k;
+  lsim_uv(L, simidx, "mats");
+  lua_pushvalue(L, idx);
+  if (lua_rawget(L, -2) == LUA_TNUMBER) {
+    k = (int)lua_tointeger(L, -1);
+    lua_pop(L, 2);
+    return k;
+  }
+  lua_pop(L, 1);
+  k = sim_add_material(&ls->s, m);
+  if (k < 0) luaL_error(L, "body: %s", ls->s.err);
+  lua_pushvalue(L, idx);
+  lua_pushinteger(L, k);
+  lua_rawset(L, -3);
+  lua_pop(L, 1);
+  return k;
+}
+
+/* field for the body: shared by name, or a new one */
+static int32_t fieldof(lua_State *L, int simidx, lsim *ls) {
+  int32_t f;
+  if (ls->fields_single) return 0;
+  lua_getfield(L, 2, "field");
+  if (lua_isnil(L, -1)) { lua_pop(L, 1); return -1; }
+  if (lua_type(L, -1) != LUA_TSTRING)
+    luaL_error(L, "body: field 'field' must be a name (string) shared by the "
+                  "bodies that move as one velocity field");
+  lsim_uv(L, simidx, "fieldnames");
+  lua_pushvalue(L, -2);
+  if (lua_rawget(L, -2) == LUA_TNUMBER) {
+    f = (int32_t)lua_tointeger(L, -1);
+    lua_pop(L, 3);
+    return f;
+  }
+  lua_pop(L, 1);
+  f = ls->s.nfield;
+  lua_pushvalue(L, -2);
+  lua_pushinteger(L, f);
+  lua_rawset(L, -3);
+  lua_pop(L, 2);
+  return f;
+}
+
+typedef struct seed {
+  double *x;    /* DIM per point */
+  double *vol;
+  size_t n, cap;
+} seed;
+
+static void seed_push(lua_State *L, seed *sd, const double *x, double vol) {
+  int d;
+  if (sd->n == sd->cap) {
+    size_t cap = sd->cap ? 2 * sd->cap : 256;
+    double *a = realloc(sd->x, cap * DIM * sizeof *a);
+    double *b = a ? realloc(sd->vol, cap * sizeof *b) : NULL;
+    if (!a || !b) {
+      free(a ? a : sd->x);
+      free(sd->vol);
+      sd->x = sd->vol = NULL;
+      luaL_error(L, "body: out of memory while seeding");
+    }
+    sd->x = a;
+    sd->vol = b;
+    sd->cap = cap;
+  }
+  for (d = 0; d < DIM; d++) sd->x[DIM * sd->n + d] = x[d];
+  sd->vol[sd->n++] = vol;
+}
+
+/* lattice points of the shape at index 'shidx' */
+static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
+                       int bodyid, seed *sd, size_t **taken, size_t *ntaken) {
+  const grid *g = &ls->s.g;
+  lshape *sh = lshape_check(L, shidx);
+  int ppc = ls->s.ppc, N[DIM], i0[DIM], i1[DIM], d;
+  double hp = g->h / ppc, vol = pow(hp, DIM), x[DIM];
+  size_t cap = 0;
+  for (d = 0; d < DIM; d++) {
+    double a = (sh->lo[d] - g->lo[d]) / hp - 1, b = (sh->hi[d] - g->lo[d]) / hp + 1;
+    N[d] = g->cells[d] * ppc;
+    i0[d] = a < 0 ? 0 : a > N[d] ? N[d] : (int)a;
+    i1[d] = b > N[d] ? N[d] : b < 0 ? 0 : (int)b;
+  }
+#if DIM == 2
+  {
+    int i, j;
+    for (j = i0[1]; j < i1[1]; j++)
+      for (i = i0[0]; i < i1[0]; i++) {
+        size_t k = (size_t)i + (size_t)N[0] * j;
+        x[0] = g->lo[0] + (i + 0.5) * hp;
+        x[1] = g->lo[1] + (j + 0.5) * hp;
+        if (!lshape_inside(L, shidx, sh, x)) continue;
+        if (ls->occ[k] >= 0) {
+          if (skip_taken) continue;
+          luaL_error(L, "body '%s' overlaps body '%s' at (%g, %g); move it, or "
+                        "give overlap = \"skip\" to seed only the free points",
+                     lua_tostring(L, -1), ls->s.bodies[ls->occ[k]].name, x[0],
+                     x[1]);
+        }
+        if (*ntaken == cap) {
+          size_t *p;
+          cap = cap ? 2 * cap : 256;
+          p = realloc(*taken, cap * sizeof *p);
+          if (!p) luaL_error(L, "body: out of memory while seeding");
+          *taken = p;
+        }
+        (*taken)[(*ntaken)++] = k;
+        seed_push(L, sd, x, vol);
+      }
+  }
+#endif
+  (void)bodyid;
+}
+
+static void seed_points(lua_State *L, lsim *ls, seed *sd) {
+  double hp = ls->s.g.h / ls->s.ppc, vdef = pow(hp, DIM);
+  const char *const names[] = {"x", "y", "z"};
+  lua_Integer n = -1, k;
+  int d, tv;
+  for (d = 0; d < DIM; d++) {
+    lua_getfield(L, -1 - d, names[d]);
+    if (!lua_istable(L, -1))
+      luaL_error(L, "body: points.%s must be a list of numbers", names[d]);
+    if (n < 0) n = luaL_len(L, -1);
+    else if (luaL_len(L, -1) != n)
+      luaL_error(L, "body: points.x and points.%s differ in length", names[d]);
+  }
+  lua_getfield(L, -1 - DIM, "volume");
+  tv = lua_type(L, -1);
+  if (tv == LUA_TNUMBER) vdef = lua_tonumber(L, -1);
+  else if (tv != LUA_TNIL && tv != LUA_TTABLE)
+    luaL_error(L, "body: points.volume must be a number or a list");
+  /* stack: points, x, y, volume */
+  for (k = 1; k <= n; k++) {
+    double x[DIM], vol = vdef;
+    for (d = 0; d < DIM; d++) {
+      int isnum;
+      lua_geti(L, -1 - DIM + d, k);
+      x[d] = lua_tonumberx(L, -1, &isnum);
+      if (!isnum || !isfinite(x[d]))
+        luaL_error(L, "body: points.%s[%d] must be a finite number", names[d],
+                   (int)k);
+      lua_pop(L, 1);
+    }
+    if (tv == LUA_TTABLE) {
+      lua_geti(L, -1, k);
+      vol = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+    }
+    if (!(vol > 0))
+      luaL_error(L, "body: point %d has volume %g; volumes must be > 0", (int)k,
+                 vol);
+    for (d = 0; d < DIM; d++)
+      if (x[d] < ls->s.g.lo[d] || x[d] >= ls->s.g.hi[d])
+        luaL_error(L, "body: point %d (%g, %g) lies outside the domain", (int)k,
+                   x[0], x[1]);
+    seed_push(L, sd, x, vol);
+  }
+  lua_pop(L, DIM + 1);
+}
+
+static void drive_spec(lua_State *L, lsim *ls, int simidx, int b) {
+  body *bd = &ls->s.bodies[b];
+  lua_getfield(L, 2, "driven");
+  if (lua_isnil(L, -1)) { lua_pop(L, 1); return; }
+  bd->driven = 1;
+  ls->s.bmat[b] = -1;
+  if (ls->s.fdriven[bd->field] >= 0)
+    luaL_error(L, "body: two driven bodies cannot share a velocity field");
+  ls->s.fdriven[bd->field] = b;
+  if (lua_isfunction(L, -1)) {
+    lsim_uv(L, simidx, "drives");
+    lua_pushvalue(L, -2);
+    lua_rawseti(L, -2, b);
+    lua_pop(L, 2);
+    ls->drives++;
+  } else {
+    lua_pop(L, 1);
+    chk_vec(L, 2, "body", "driven", bd->vdrive, DIM, 1);
+  }
+}
+
+int lbody_new(lua_State *L) {
+  static const char *const keys[] = {"name", "shape", "points", "material",
+      "velocity", "angular_velocity", "field", "driven", "volume", "overlap",
+      NULL};
+  static const char *const vols[] = {"cell", "exact", NULL};
+  static const char *const ovl[] = {"error", "skip", NULL};
+  lsim *ls = lsim_check(L, 1);
+  sim *s = &ls->s;
+  seed sd = {0};
+  size_t *taken = NULL, ntaken = 0, k;
+  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1;
+  int mi, b, d, exact, skip, isrest = 0, vfun;
+  int32_t field;
+  char name[32];
+  luaL_checktype(L, 2, LUA_TTABLE);
+  chk_keys(L, 2, "body", keys);
+  if (s->started) luaL_error(L, "body: bodies must be added before the first step");
+  lua_getfield(L, 2, "name");
+  if (lua_isnil(L, -1)) snprintf(name, sizeof name, "body%d", s->nbody + 1);
+  else snprintf(name, sizeof name, "%s", luaL_checkstring(L, -1));
+  lua_pop(L, 1);
+  lua_getfield(L, 2, "material");
+  if (lua_isnil(L, -1)) luaL_error(L, "body '%s': field 'material' is required", name);
+  if (!luaL_testudata(L, -1, LMAT_MT))
+    luaL_error(L, "body '%s': field 'material' must be a material (got %s)",
+               name, luaL_typename(L, -1));
+  mi = matindex(L, 1, lua_gettop(L));
+  lua_pop(L, 1);
+  lua_getfield(L, 2, "velocity");
+  vfun = lua_isfunction(L, -1);
+  lua_pop(L, 1);
+  if (!vfun) chk_vec(L, 2, "body", "velocity", v0, DIM, 0);
+  omega = chk_num(L, 2, "body", "angular_velocity", 0, -HUGE_VAL, HUGE_VAL, 0);
+  exact = chk_option(L, 2, "body", "volume", 0, vols);
+  skip = chk_option(L, 2, "body", "overlap", 0, ovl);
+  occ_init(L, ls);
+  /* seed */
+  lua_pushstring(L, name); /* for overlap messages */
+  lua_getfield(L, 2, "shape");
+  lua_getfield(L, 2, "points");
+  if (!lua_isnil(L, -2) == !lua_isnil(L, -1))
+    luaL_error(L, "body '%s': give exactly one of 'shape' and 'points'", name);
+  if (!lua_isnil(L, -2)) {
+    lshape *sh;
+    lua_pop(L, 1);
+    if (!luaL_testudata(L, -1, LSHAPE_MT))
+      luaL_error(L, "body '%s': field 'shape' must be a shape (mvmpm.disk, "
+                    "rect, polygon, annulus, region or rest)", name);
+    sh = lshape_check(L, -1);
+    isrest = sh->kind == SH_REST;
+    lua_insert(L, -2);  /* name on top for messages */
+    seed_shape(L, ls, lua_gettop(L) - 1, skip || isrest, s->nbody, &sd, &taken,
+               &ntaken);
+    if (exact) {
+      double a = lshape_area(sh);
+      if (a < 0)
+        luaL_error(L, "body '%s': volume = \"exact\" needs a shape of known area",
+                   name);
+      if (sd.n) scale = a / (sd.n * sd.vol[0]);
+    }
+    lua_pop(L, 2);
+  } else {
+    seed_points(L, ls, &sd);
+    lua_pop(L, 3);
+  }
+  if (sd.n == 0) {
+    free(sd.x); free(sd.vol); free(taken);
+    luaL_error(L, "body '%s': no particle falls inside its shape (is it inside "
+                  "the domain and at least one seeding point across?)", name);
+  }
+  field = fieldof(L, 1, ls);
+  b = sim_add_body(s, name, mi, field);
+  if (b < 0) { free(sd.x); free(sd.vol); free(taken); luaL_error(L, "body: out of memory"); }
+  for (k = 0; k < ntaken; k++) ls->occ[taken[k]] = b;
+  free(taken);
+  for (k = 0; k < sd.n; k++)
+    for (d = 0; d < DIM; d++) c[d] += sd.x[DIM * k + d] / sd.n;
+  for (k = 0; k < sd.n; k++) {
+    double *x = &sd.x[DIM * k], v[DIM];
+    for (d = 0; d < DIM; d++) v[d] = v0[d];
+    v[0] -= omega * (x[1] - c[1]);
+    v[1] += omega * (x[0] - c[0]);
+    if (vfun) { /* velocity = function(x, y) return vx, vy end */
+      lua_getfield(L, 2, "velocity");
+      for (d = 0; d < DIM; d++) lua_pushnumber(L, x[d]);
+      lua_call(L, DIM, DIM);
+      for (d = 0; d < DIM; d++) {
+        int isnum;
+        v[d] += lua_tonumberx(L, d - DIM, &isnum);
+        if (!isnum) {
+          free(sd.x); free(sd.vol);
+          luaL_error(L, "body '%s': velocity function must return %d numbers", name, DIM);
+        }
+      }
+      lua_pop(L, DIM);
+    }
+    if (sim_add_particle(s, b, x, v, sd.vol[k] * scale) < 0) {
+      free(sd.x); free(sd.vol);
+      luaL_error(L, "body: out of memory for particles");
+    }
+  }
+  free(sd.x);
+  free(sd.vol);
+  drive_spec(L, ls, 1, b);
+  (void)isrest;
+  return lbody_push(L, 1, b);
+}
+
+int lbody_push(lua_State *L, int simidx, int b) {
+  lsim *ls = lsim_check(L, simidx);
+  lbody *lb;
+  lsim_uv(L, simidx, "bodies");
+  if (lua_rawgeti(L, -1, b + 1) != LUA_TNIL) {
+    lua_remove(L, -2);
+    return 1;
+  }
+  lua_pop(L, 1);
+  lb = lua_newuserdatauv(L, sizeof *lb, 1);
+  lb->ls = ls;
+  lb->idx = b;
+  luaL_setmetatable(L, LBODY_MT);
+  lua_pushvalue(L, simidx); /* keep the simulation alive */
+  lua_setiuservalue(L, -2, 1);
+  lua_pushvalue(L, -1);
+  lua_rawseti(L, -3, b + 1);
+  lua_remove(L, -2);
+  return 1;
+}
+
+static void diag_of(lua_State *L, lbody *lb, bdiag *out) {
+  sim *s = &lb->ls->s;
+  bdiag *all = malloc((size_t)s->nbody * sizeof *all);
+  if (!all) luaL_error(L, "body: out of memory");
+  diag_bodies(s, all);
+  *out = all[lb->idx];
+  free(all);
+}
+
+static void setnum(lua_State *L, const char *k, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, k);
+}
+
+/* b:diag() -> {mass, x, y, vx, vy, omega, angmom, inertia, kinetic, strain, n} */
+static int bdiag_(lua_State *L) {
+  lbody *lb = checkbody(L, 1);
+  bdiag o;
+  diag_of(L, lb, &o);
+  lua_createtable(L, 0, 12);
+  setnum(L, "mass", o.mass);
+  setnum(L, "x", o.x[0]);
+  setnum(L, "y", o.x[1]);
+  setnum(L, "vx", o.v[0]);
+  setnum(L, "vy", o.v[1]);
+  setnum(L, "omega", o.omega);
+  setnum(L, "angmom", o.angmom);
+  setnum(L, "inertia", o.inertia);
+  setnum(L, "kinetic", o.kinetic);
+  setnum(L, "strain", o.strain);
+  lua_pushinteger(L, (lua_Integer)o.n);
+  lua_setfield(L, -2, "n");
+  return 1;
+}
+
+static int bvec(lua_State *L, int which) {
+  lbody *lb = checkbody(L, 1);
+  bdiag o;
+  int d;
+  diag_of(L, lb, &o);
+  if (which == 2) { lua_pushnumber(L, o.omega); return 1; }
+  if (which == 3) { lua_pushnumber(L, o.mass); return 1; }
+  for (d = 0; d < DIM; d++) lua_pushnumber(L, which ? o.v[d] : o.x[d]);
+  return DIM;
+}
+static int bcentroid(lua_State *L) { return bvec(L, 0); }
+static int bvelocity(lua_State *L) { return bvec(L, 1); }
+static int bomega(lua_State *L) { return bvec(L, 2); }
+static int bmass(lua_State *L) { return bvec(L, 3); }
+
+/* b:drive(vx, vy): set a driven body's velocity from now on */
+static int bdrive(lua_State *L) {
+  lbody *lb = checkbody(L, 1);
+  body *b = &lb->ls->s.bodies[lb->idx];
+  int d;
+  if (!b->driven) luaL_error(L, "body '%s' is not driven (give it driven = {...})", b->name);
+  for (d = 0; d < DIM; d++) b->vdrive[d] = luaL_checknumber(L, 2 + d);
+  return 0;
+}
+
+static int bindex(lua_State *L) {
+  lbody *lb = checkbody(L, 1);
+  const char *k = luaL_checkstring(L, 2);
+  body *b = &lb->ls->s.bodies[lb->idx];
+  if (strcmp(k, "name") == 0) lua_pushstring(L, b->name);
+  else if (strcmp(k, "id") == 0) lua_pushinteger(L, lb->idx + 1);
+  else if (strcmp(k, "field") == 0) lua_pushinteger(L, b->field + 1);
+  else if (strcmp(k, "driven") == 0) lua_pushboolean(L, b->driven);
+  else {
+    luaL_getmetafield(L, 1, "methods");
+    lua_getfield(L, -1, k);
+  }
+  return 1;
+}
+
+static int btostr(lua_State *L) {
+  lbody *lb = checkbody(L, 1);
+  lua_pushfstring(L, "body %d '%s'", lb->idx + 1, lb->ls->s.bodies[lb->idx].name);
+  return 1;
+}
+
+void lbody_open(lua_State *L) {
+  static const luaL_Reg meth[] = {{"diag", bdiag_}, {"centroid", bcentroid},
+                                  {"velocity", bvelocity}, {"omega", bomega},
+                                  {"mass", bmass}, {"drive", bdrive},
+                                  {NULL, NULL}};
+  luaL_newmetatable(L, LBODY_MT);
+  lua_pushcfunction(L, bindex);
+  lua_setfield(L, -2, "__index");
+  lua_pushcfunction(L, btostr);
+  lua_setfield(L, -2, "__tostring");
+  luaL_newlib(L, meth);
+  lua_setfield(L, -2, "methods");
+  lua_pop(L, 1);
+}

@@ -1,0 +1,496 @@
+/*
+** lua_sim.c - the simulation object in Lua: mvmpm.sim{...} and its
+** methods.  The table is checked field by field; errors name the scene
+** line, the field and its allowed range.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "lcheck.h"
+#include "lsim.h"
+#include "shape.h"
+
+lsim *lsim_check(lua_State *L, int idx) {
+  lsim *ls = luaL_checkudata(L, idx, LSIM_MT);
+  if (!ls->ok) luaL_error(L, "simulation is not set up");
+  return ls;
+}
+
+void lsim_uv(lua_State *L, int idx, const char *field) {
+  lua_getiuservalue(L, idx, 1);
+  lua_getfield(L, -1, field);
+  lua_remove(L, -2);
+}
+
+static const char *const side_names[] = {"left", "right", "bottom", "top",
+                                         "back", "front", NULL};
+static const char *const side_kinds[] = {"free", "wall", "periodic", NULL};
+
+/* one side: "wall" | "free" | "periodic" | {"wall", friction=, velocity=} */
+static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
+                      int *periodic) {
+  static const char *const keys[] = {"friction", "velocity", NULL};
+  side *sd = &ls->s.sides[k];
+  char what[48];
+  int kind;
+  snprintf(what, sizeof what, "sides.%s", side_names[k]);
+  sd->mu = 0;
+  if (lua_type(L, idx) == LUA_TSTRING) {
+    lua_newtable(L);
+    lua_pushvalue(L, idx);
+    lua_rawseti(L, -2, 1);
+    lua_replace(L, idx);
+  }
+  if (!lua_istable(L, idx))
+    luaL_error(L, "%s must be \"wall\", \"free\", \"periodic\" or a table "
+                  "{\"wall\", friction = mu, velocity = {vx, vy}}", what);
+  chk_keys(L, idx, what, keys);
+  lua_rawgeti(L, idx, 1);
+  lua_setfield(L, idx, "kind");
+  kind = chk_option(L, idx, what, "kind", SIDE_WALL, side_kinds);
+  lua_pushnil(L);
+  lua_setfield(L, idx, "kind");
+  sd->kind = kind;
+  periodic[k] = kind == SIDE_PERIODIC;
+  lua_getfield(L, idx, "friction");
+  if (lua_type(L, -1) == LUA_TSTRING && strcmp(lua_tostring(L, -1), "stick") == 0)
+    sd->mu = INFINITY;
+  else
+    sd->mu = chk_num(L, idx, what, "friction", 0, 0, HUGE_VAL, 0);
+  lua_pop(L, 1);
+  lua_getfield(L, idx, "velocity");
+  if (lua_isfunction(L, -1)) {
+    if (kind != SIDE_WALL) luaL_error(L, "%s: only a wall can move", what);
+    lsim_uv(L, simidx, "sidefn");
+    lua_pushvalue(L, -2);
+    lua_rawseti(L, -2, k);
+    lua_pop(L, 1);
+    ls->sidefns++;
+  } else if (!lua_isnil(L, -1)) {
+    if (kind != SIDE_WALL) luaL_error(L, "%s: only a wall can move", what);
+    chk_vec(L, idx, what, "velocity", sd->v, DIM, 1);
+  }
+  lua_pop(L, 1);
+}
+
+static double friction(lua_State *L, int idx, const char *what) {
+  double mu;
+  lua_getfield(L, idx, "friction");
+  if (lua_type(L, -1) == LUA_TSTRING && strcmp(lua_tostring(L, -1), "stick") == 0)
+    mu = INFINITY;
+  else mu = chk_num(L, idx, what, "friction", 0, 0, HUGE_VAL, 0);
+  lua_pop(L, 1);
+  return mu;
+}
+
+static void newuv(lua_State *L) {
+  static const char *const t[] = {"mats", "bodies", "every", "drives",
+                                  "sidefn", "fieldnames", NULL};
+  int k;
+  lua_createtable(L, 0, 8);
+  for (k = 0; t[k]; k++) {
+    lua_newtable(L);
+    lua_setfield(L, -2, t[k]);
+  }
+  lua_setiuservalue(L, -2, 1);
+}
+
+int lsim_new(lua_State *L) {
+  static const char *const keys[] = {"domain", "cell", "ppc", "shape",
+      "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
+      "contact", "fields", "units", "sort_every", "mass_cutoff", NULL};
+  static const char *const updates[] = {"usl", "musl", NULL};
+  static const char *const transfers[] = {"flip", NULL};
+  static const char *const fieldsopt[] = {"body", "single", NULL};
+  const char *what = "sim";
+  double lo[DIM], hi[DIM], h, nodes, bytes;
+  int periodic[NSIDES] = {0}, pdim[DIM], shape, ppc, k, d, sidx;
+  lsim *ls;
+  sim *s;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  chk_keys(L, 1, what, keys);
+  /* domain = {x = {0, 3}, y = {0, 3}} */
+  lua_getfield(L, 1, "domain");
+  if (!lua_istable(L, -1))
+    luaL_error(L, "sim: field 'domain' is required: {x = {xmin, xmax}, y = {ymin, ymax}}");
+  {
+    static const char *const dk[] = {"x", "y", "z", NULL};
+    static const char *const dk2[] = {"x", "y", NULL};
+    chk_keys(L, -1, "sim.domain", DIM == 2 ? dk2 : dk);
+    for (d = 0; d < DIM; d++) {
+      double r[2];
+      chk_vec(L, -1, "sim.domain", dk[d], r, 2, 1);
+      if (!(r[1] > r[0]))
+        luaL_error(L, "sim.domain: %s = {%g, %g} must have max > min", dk[d], r[0], r[1]);
+      lo[d] = r[0];
+      hi[d] = r[1];
+    }
+  }
+  lua_pop(L, 1);
+  h = chk_num(L, 1, what, "cell", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  nodes = 1;
+  for (d = 0; d < DIM; d++) {
+    double c = (hi[d] - lo[d]) / h;
+    if (fabs(c - floor(c + 0.5)) > 1e-6 * c)
+      luaL_error(L, "sim: the domain's extent along %c (%g) must be a whole "
+                    "number of cells of size %g (got %g cells)", "xyz"[d],
+                 hi[d] - lo[d], h, c);
+    nodes *= c + 3;
+  }
+  ppc = (int)chk_num(L, 1, what, "ppc", 2, 1, 8, CHK_INT);
+  shape = chk_option(L, 1, what, "shape", SHAPE_LINEAR, shape_names);
+  bytes = grid_bytes(lo, hi, h, shape_pad(shape)) +
+          nodes * pow(ppc, DIM) * (8.0 * (2 * DIM + 2 + 2 * NTENS + NSTRESS + 2) + 16);
+  if (bytes > 16e9)
+    luaL_error(L, "sim: %.3g cells would need about %.1f GB (limit 16 GB); "
+                  "use a coarser 'cell' or a smaller domain", nodes, bytes / 1e9);
+  /* sides */
+  lua_getfield(L, 1, "sides");
+  sidx = lua_gettop(L);
+  ls = lua_newuserdatauv(L, sizeof *ls, 1);
+  memset(ls, 0, sizeof *ls);
+  luaL_setmetatable(L, LSIM_MT);
+  newuv(L);
+  {
+    int simidx = lua_gettop(L);
+    for (k = 0; k < NSIDES; k++) ls->s.sides[k].kind = SIDE_WALL;
+    int all = lua_type(L, sidx) == LUA_TSTRING || lua_isnil(L, sidx);
+    if (lua_istable(L, sidx)) { /* {"wall", friction = mu}: every side */
+      all = lua_rawgeti(L, sidx, 1) == LUA_TSTRING;
+      lua_pop(L, 1);
+    }
+    if (all) {
+      for (k = 0; k < NSIDES; k++) {
+        if (lua_isnil(L, sidx)) lua_pushstring(L, "wall");
+        else lua_pushvalue(L, sidx);
+        side_spec(L, ls, simidx, k, lua_gettop(L), periodic);
+        lua_pop(L, 1);
+      }
+    } else if (lua_istable(L, sidx)) {
+      chk_keys(L, sidx, "sides", side_names);
+      for (k = 0; k < NSIDES; k++) {
+        lua_getfield(L, sidx, side_names[k]);
+        if (lua_isnil(L, -1)) { lua_pop(L, 1); lua_pushstring(L, "wall"); }
+        side_spec(L, ls, simidx, k, lua_gettop(L), periodic);
+        lua_pop(L, 1);
+      }
+    } else
+      luaL_error(L, "sim: field 'sides' must be a string or a table of sides");
+    for (d = 0; d < DIM; d++) {
+      if (periodic[2 * d] != periodic[2 * d + 1])
+        luaL_error(L, "sim: sides.%s and sides.%s must both be periodic or neither",
+                   side_names[2 * d], side_names[2 * d + 1]);
+      pdim[d] = periodic[2 * d];
+    }
+    {
+      side keep[NSIDES];
+      memcpy(keep, ls->s.sides, sizeof keep);
+      if (sim_init(&ls->s, lo, hi, h, pdim, shape, ppc))
+        luaL_error(L, "sim: %s", ls->s.err);
+      for (k = 0; k < NSIDES; k++) {
+        double *ext = ls->s.sides[k].ext;
+        size_t next = ls->s.sides[k].next;
+        ls->s.sides[k] = keep[k];
+        ls->s.sides[k].ext = ext;
+        ls->s.sides[k].next = next;
+      }
+    }
+    ls->ok = 1;
+    s = &ls->s;
+    s->update = chk_option(L, 1, what, "update", UPDATE_MUSL, updates);
+    chk_option(L, 1, what, "transfer", 0, transfers);
+    s->flip = chk_num(L, 1, what, "flip", 1.0, 0, 1, 0);
+    s->cfl = chk_num(L, 1, what, "cfl", 0.4, 0, 1, CHK_OPENLO);
+    s->dt_fixed = chk_num(L, 1, what, "dt", 0, 0, HUGE_VAL, 0);
+    s->t_end = chk_num(L, 1, what, "t_end", 1.0, 0, HUGE_VAL, 0);
+    chk_vec(L, 1, what, "gravity", s->gravity, DIM, 0);
+    s->sort_every = (int)chk_num(L, 1, what, "sort_every", 20, 0, 1e9, CHK_INT);
+    s->mcut_rel = chk_num(L, 1, what, "mass_cutoff", 1e-9, 0, 1, 0);
+    ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
+    lua_getfield(L, 1, "units");
+    snprintf(ls->units, sizeof ls->units, "%s",
+             lua_isnil(L, -1) ? "nondimensional" : luaL_checkstring(L, -1));
+    lua_pop(L, 1);
+    lua_getfield(L, 1, "contact");
+    if (!lua_isnil(L, -1)) {
+      static const char *const ck[] = {"friction", "separation", NULL};
+      int ci = lua_gettop(L);
+      if (!lua_istable(L, ci)) luaL_error(L, "sim: field 'contact' must be a table");
+      chk_keys(L, ci, "sim.contact", ck);
+      s->mu_default = friction(L, ci, "sim.contact");
+      s->gap_check = chk_bool(L, ci, "sim.contact", "separation", 1);
+    }
+    lua_pop(L, 1);
+    lua_pushvalue(L, simidx);
+  }
+  /* remember the newest simulation, for scenes that do not return it */
+  lua_pushvalue(L, -1);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.last");
+  return 1;
+}
+
+static int lgc(lua_State *L) {
+  lsim *ls = luaL_checkudata(L, 1, LSIM_MT);
+  if (ls->ok) {
+    run_close(L, ls);
+    free(ls->occ);
+    free(ls->snaps);
+    sim_free(&ls->s);
+    ls->ok = 0;
+  }
+  return 0;
+}
+
+/* sim:contact(a, b, {friction = mu}) or sim:contact{friction = mu} */
+static int lcontact(lua_State *L) {
+  static const char *const ck[] = {"friction", "separation", NULL};
+  lsim *ls = lsim_check(L, 1);
+  if (lua_istable(L, 2)) {
+    chk_keys(L, 2, "contact", ck);
+    ls->s.mu_default = friction(L, 2, "contact");
+    ls->s.gap_check = chk_bool(L, 2, "contact", "separation", ls->s.gap_check);
+    return 0;
+  } else {
+    lbody *a = luaL_checkudata(L, 2, LBODY_MT), *b = luaL_checkudata(L, 3, LBODY_MT);
+    int32_t fa = ls->s.bodies[a->idx].field, fb = ls->s.bodies[b->idx].field;
+    double mu;
+    luaL_checktype(L, 4, LUA_TTABLE);
+    chk_keys(L, 4, "contact", ck);
+    if (fa == fb)
+      luaL_error(L, "contact: bodies '%s' and '%s' share one velocity field, so "
+                    "they are bonded; give them different fields",
+                 ls->s.bodies[a->idx].name, ls->s.bodies[b->idx].name);
+    mu = friction(L, 4, "contact");
+    if (sim_set_law(&ls->s, fa, fb, mu)) luaL_error(L, "contact: out of memory");
+    return 0;
+  }
+}
+
+/* sim:every{time = dt | steps = n, fn = function(sim) ... end} */
+static int levery(lua_State *L) {
+  static const char *const keys[] = {"time", "steps", "fn", NULL};
+  lsim *ls = lsim_check(L, 1);
+  double dt, n;
+  luaL_checktype(L, 2, LUA_TTABLE);
+  chk_keys(L, 2, "every", keys);
+  dt = chk_num(L, 2, "every", "time", 0, 0, HUGE_VAL, 0);
+  n = chk_num(L, 2, "every", "steps", 0, 0, 1e15, CHK_INT);
+  if ((dt > 0) == (n > 0))
+    luaL_error(L, "every: give exactly one of 'time' (> 0) and 'steps' (> 0)");
+  lua_getfield(L, 2, "fn");
+  if (!lua_isfunction(L, -1)) luaL_error(L, "every: field 'fn' must be a function(sim)");
+  lua_pop(L, 1);
+  lsim_uv(L, 1, "every");
+  lua_createtable(L, 0, 4);
+  lua_getfield(L, 2, "fn");
+  lua_setfield(L, -2, "fn");
+  if (dt > 0) {
+    lua_pushnumber(L, dt); lua_setfield(L, -2, "time");
+    lua_pushnumber(L, ls->s.t + dt); lua_setfield(L, -2, "next");
+  } else {
+    lua_pushinteger(L, (lua_Integer)n); lua_setfield(L, -2, "steps");
+    lua_pushinteger(L, ls->s.step + (lua_Integer)n); lua_setfield(L, -2, "next");
+  }
+  lua_rawseti(L, -2, luaL_len(L, -2) + 1);
+  ls->nevery++;
+  return 0;
+}
+
+/* sim:output{dir = "out/x", every = 0.5, csv_every = 1} */
+static int loutput(lua_State *L) {
+  static const char *const keys[] = {"dir", "every", "csv_every", NULL};
+  lsim *ls = lsim_check(L, 1);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  chk_keys(L, 2, "output", keys);
+  lua_getfield(L, 2, "dir");
+  if (!lua_isnil(L, -1) && !ls->outdir[0])  /* --out on the command line wins */
+    snprintf(ls->outdir, sizeof ls->outdir, "%s", luaL_checkstring(L, -1));
+  lua_pop(L, 1);
+  ls->out_every = chk_num(L, 2, "output", "every", ls->out_every, 0, HUGE_VAL, 0);
+  ls->csv_every = (long)chk_num(L, 2, "output", "csv_every",
+                                ls->csv_every ? (double)ls->csv_every : 1, 0, 1e15,
+                                CHK_INT);
+  ls->out_enabled = 1;
+  return 0;
+}
+
+static int lstep(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  lua_Integer n = luaL_optinteger(L, 2, 1);
+  if (n < 0) luaL_argerror(L, 2, "number of steps must be >= 0");
+  run_until(L, 1, HUGE_VAL, (long)n);
+  lua_pushnumber(L, ls->s.t);
+  return 1;
+}
+
+static int lrun(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  double t = luaL_optnumber(L, 2, ls->s.t_end);
+  run_until(L, 1, t, -1);
+  lua_pushnumber(L, ls->s.t);
+  return 1;
+}
+
+
+static void setnum(lua_State *L, const char *k, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, k);
+}
+
+/* sim:energy() -> the budget and momenta */
+static int lenergy(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  sim *s = &ls->s;
+  if (!s->started) {
+    sim_measure(s);
+    s->e.initial = s->e.kinetic + s->e.strain;
+  }
+  lua_createtable(L, 0, 14);
+  setnum(L, "kinetic", s->e.kinetic);
+  setnum(L, "strain", s->e.strain);
+  setnum(L, "dissipated", s->e.friction);
+  setnum(L, "boundary_work", s->e.boundary);
+  setnum(L, "initial", s->e.initial);
+  setnum(L, "total", sim_total(s));
+  setnum(L, "residual", s->e.initial + s->e.boundary - s->e.friction - sim_total(s));
+  setnum(L, "px", s->e.mom[0]);
+  setnum(L, "py", s->e.mom[1]);
+  setnum(L, "angmom", s->e.angmom);
+  setnum(L, "jmin", s->e.jmin);
+  setnum(L, "jmax", s->e.jmax);
+  return 1;
+}
+
+static int lbodies(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  int b;
+  lua_createtable(L, ls->s.nbody, 0);
+  for (b = 0; b < ls->s.nbody; b++) {
+    lbody_push(L, 1, b);
+    lua_rawseti(L, -2, b + 1);
+  }
+  return 1;
+}
+
+static int lsnapshot(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  run_snapshot(L, ls, luaL_checkstring(L, 2));
+  return 0;
+}
+
+/* sim:particles("stress") -> {xx = {...}, yy = {...}, ...} (copies);
+** sim:particles() -> the list of field names */
+static int lparticles(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  particles *ps = &ls->s.ps;
+  int f, c;
+  size_t i;
+  if (lua_isnoneornil(L, 2)) {
+    lua_createtable(L, ps->nfields, 0);
+    for (f = 0; f < ps->nfields; f++) {
+      lua_pushstring(L, ps->fields[f].name);
+      lua_rawseti(L, -2, f + 1);
+    }
+    return 1;
+  }
+  f = particles_find(ps, luaL_checkstring(L, 2));
+  if (f < 0) luaL_error(L, "particles: no field '%s' (sim:particles() lists them)",
+                        lua_tostring(L, 2));
+  lua_createtable(L, 0, ps->fields[f].ncomp);
+  for (c = 0; c < ps->fields[f].ncomp; c++) {
+    const pfield *pf = &ps->fields[f];
+    lua_createtable(L, (int)ps->n, 0);
+    for (i = 0; i < ps->n; i++) {
+      if (pf->type == PF_INT32)
+        lua_pushinteger(L, ((int32_t *)particles_comp(ps, f, c))[i] +
+                               (strcmp(pf->name, "body") == 0));
+      else lua_pushnumber(L, ((double *)particles_comp(ps, f, c))[i]);
+      lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    if (pf->ncomp == 1) return 1;
+    lua_setfield(L, -2, pf->comp_names[c] ? pf->comp_names[c] : "?");
+  }
+  return 1;
+}
+
+static int lstable_dt(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  if (!ls->s.started) sim_measure(&ls->s);
+  lua_pushnumber(L, sim_stable_dt(&ls->s));
+  return 1;
+}
+
+static int lindex(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  sim *s = &ls->s;
+  const char *k = luaL_checkstring(L, 2);
+  if (strcmp(k, "t") == 0) lua_pushnumber(L, s->t);
+  else if (strcmp(k, "dt") == 0) lua_pushnumber(L, s->started ? s->dt : sim_stable_dt(s));
+  else if (strcmp(k, "step") == 0 || strcmp(k, "steps") == 0) lua_pushinteger(L, s->step);
+  else if (strcmp(k, "t_end") == 0) lua_pushnumber(L, s->t_end);
+  else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)s->ps.n);
+  else if (strcmp(k, "nbody") == 0) lua_pushinteger(L, s->nbody);
+  else if (strcmp(k, "nfield") == 0) lua_pushinteger(L, s->nfield);
+  else if (strcmp(k, "cell") == 0) lua_pushnumber(L, s->g.h);
+  else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->flip);
+  else if (strcmp(k, "cfl") == 0) lua_pushnumber(L, s->cfl);
+  else if (strcmp(k, "friction") == 0) lua_pushnumber(L, s->mu_default);
+  else if (strcmp(k, "removed") == 0) lua_pushinteger(L, (lua_Integer)s->nremoved);
+  else if (strcmp(k, "shared_nodes") == 0) lua_pushinteger(L, (lua_Integer)s->g.nshared);
+  else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
+  else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL ? "musl" : "usl");
+  else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);
+  else {
+    luaL_getmetafield(L, 1, "methods");
+    lua_getfield(L, -1, k);
+  }
+  return 1;
+}
+
+/* settable between steps: flip, cfl, dt (0 = automatic), t_end, friction */
+static int lnewindex(lua_State *L) {
+  static const char *const keys[] = {"flip", "cfl", "dt", "t_end", "friction",
+                                     "progress", NULL};
+  lsim *ls = lsim_check(L, 1);
+  sim *s = &ls->s;
+  const char *k = luaL_checkstring(L, 2);
+  lua_settop(L, 3);
+  lua_createtable(L, 0, 1);
+  lua_pushvalue(L, 3);
+  lua_setfield(L, -2, k);
+  chk_keys(L, 4, "sim", keys);
+  if (strcmp(k, "flip") == 0) s->flip = chk_num(L, 4, "sim", k, 1, 0, 1, 0);
+  else if (strcmp(k, "cfl") == 0) s->cfl = chk_num(L, 4, "sim", k, 0.4, 0, 1, CHK_OPENLO);
+  else if (strcmp(k, "dt") == 0) s->dt_fixed = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
+  else if (strcmp(k, "t_end") == 0) s->t_end = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
+  else if (strcmp(k, "friction") == 0) s->mu_default = friction(L, 4, "sim");
+  else if (strcmp(k, "progress") == 0) ls->progress = lua_toboolean(L, 3);
+  return 0;
+}
+
+static int ltostr(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  lua_pushfstring(L, "sim: %d bodies, %d particles, t = %f, step %d",
+                  ls->s.nbody, (int)ls->s.ps.n, ls->s.t, (int)ls->s.step);
+  return 1;
+}
+
+void lsim_open(lua_State *L) {
+  static const luaL_Reg meth[] = {
+      {"body", lbody_new}, {"contact", lcontact}, {"every", levery},
+      {"output", loutput}, {"step", lstep}, {"run", lrun},
+      {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
+      {"particles", lparticles}, {"stable_dt", lstable_dt}, {NULL, NULL}};
+  luaL_newmetatable(L, LSIM_MT);
+  lua_pushcfunction(L, lindex);
+  lua_setfield(L, -2, "__index");
+  lua_pushcfunction(L, lnewindex);
+  lua_setfield(L, -2, "__newindex");
+  lua_pushcfunction(L, lgc);
+  lua_setfield(L, -2, "__gc");
+  lua_pushcfunction(L, ltostr);
+  lua_setfield(L, -2, "__tostring");
+  luaL_newlib(L, meth);
+  lua_setfield(L, -2, "methods");
+  lua_pop(L, 1);
+}

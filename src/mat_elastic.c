@@ -1,0 +1,42 @@
+/*
+** mat_elastic.c - isotropic linear elasticity in rate form:
+**   sigma' = lambda tr(D) I + 2 G D    (objective: see material.h)
+** In plane strain D_zz = 0, so sigma_zz grows with lambda tr(D) only.
+*/
+#include "material.h"
+
+static int setup(material *m, particles *ps) { return 0; }
+
+static void update(const material *m, particles *ps, const int32_t *bmat,
+                   int32_t id, double dt, mat_sums *sum) {
+  const double lam = m->lambda, g2 = 2.0 * m->G, K = m->K, G = m->G;
+  double s[NSTRESS], D[NSTRESS], strain = 0, power = 0;
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    double J, tr;
+    if (bmat[ps->body[i]] != id) continue;
+    mat_get(ps, i, s);
+    J = mat_kinematics(ps, i, dt, s, D);
+#if DIM == 2
+    tr = dt * (D[S_XX] + D[S_YY]);
+    s[S_XX] += lam * tr + g2 * dt * D[S_XX];
+    s[S_YY] += lam * tr + g2 * dt * D[S_YY];
+    s[S_XY] += g2 * dt * D[S_XY];
+    s[S_ZZ] += lam * tr;
+#endif
+    mat_put(ps, i, s);
+    mat_sum_j(sum, J);
+    strain += ps->vol0[i] * mat_elastic_density(s, K, G);
+    power += J * ps->vol0[i] * mat_power(s, D);
+  }
+  sum->strain += strain;
+  sum->power += power;
+}
+
+static double energy(const material *m, const particles *ps, size_t i) {
+  double s[NSTRESS];
+  mat_get(ps, i, s);
+  return ps->vol0[i] * mat_elastic_density(s, m->K, m->G);
+}
+
+const mat_model mat_elastic = {"elastic", setup, update, energy};

@@ -1,0 +1,688 @@
+/*
+** out_h5.c - particle snapshots in HDF5 (the layout is described in
+** out_h5.h).  HDF5's own error printing is switched off for the length
+** of each call, so the one message a user sees is ours: the file name,
+** what failed, and why (the system's reason when there is one, else the
+** innermost line of HDF5's error stack).
+*/
+#include <errno.h>
+#include <fcntl.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include <hdf5.h>
+
+#include "out_h5.h"
+
+#define FORMAT "mvmpm-snapshot-1"
+#define SOURCE "scene_source" /* dataset holding the scene's text */
+#define CHUNKROWS 65536
+#define DEFLATE 4
+#define MSGLEN 256 /* each part of a message: what failed, and why */
+
+/* one write or read: where the message goes and what to release */
+typedef struct h5s {
+  const char *path; /* the name the user knows (never the temp name) */
+  char *err;
+  size_t errlen;
+  int failed;       /* only the first failure is reported */
+  hid_t file;
+  void *buf;        /* row-major staging for (n, ncomp) datasets */
+  size_t bufsz;
+  H5E_auto2_t efunc; /* HDF5's error printer, restored on the way out */
+  void *edata;
+} h5s;
+
+/*
+** {======================================================
+** Errors
+** =======================================================
+*/
+
+static herr_t innermost(unsigned k, const H5E_error2_t *e, void *ud) {
+  char *why = ud;
+  if (k == 0 && e->desc && e->desc[0]) snprintf(why, MSGLEN, "%s", e->desc);
+  return 0;
+}
+
+/*
+** Called right after the failing call, so errno and HDF5's error stack
+** still describe it (every HDF5 API call clears the stack on entry).
+** errno is trusted only because each step clears it before starting.
+*/
+static int fail(h5s *S, const char *fmt, ...) {
+  int en = errno;
+  char what[MSGLEN], why[MSGLEN] = "";
+  va_list ap;
+  if (S->failed) return -1;
+  S->failed = 1;
+  if (en) snprintf(why, sizeof why, "%s", strerror(en));
+  else H5Ewalk2(H5E_DEFAULT, H5E_WALK_UPWARD, innermost, why);
+  va_start(ap, fmt);
+  vsnprintf(what, sizeof what, fmt, ap);
+  va_end(ap);
+  if (S->err && S->errlen) {
+    if (why[0]) snprintf(S->err, S->errlen, "%s: %s (%s)", S->path, what, why);
+    else snprintf(S->err, S->errlen, "%s: %s", S->path, what);
+  }
+  return -1;
+}
+
+static void begin(h5s *S, const char *path, char *err, size_t errlen) {
+  memset(S, 0, sizeof *S);
+  S->path = path;
+  S->err = err;
+  S->errlen = errlen;
+  S->file = -1;
+  if (err && errlen) err[0] = '\0';
+  H5Eget_auto2(H5E_DEFAULT, &S->efunc, &S->edata);
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+}
+
+static void end(h5s *S) {
+  if (S->file >= 0) H5Fclose(S->file);
+  S->file = -1;
+  free(S->buf);
+  S->buf = NULL;
+  H5Eset_auto2(H5E_DEFAULT, S->efunc, S->edata);
+}
+
+/* make sure the staging buffer holds at least sz bytes */
+static int room(h5s *S, size_t sz) {
+  void *p;
+  if (sz <= S->bufsz) return 0;
+  p = realloc(S->buf, sz);
+  if (!p) return -1;
+  S->buf = p;
+  S->bufsz = sz;
+  return 0;
+}
+
+/* variable-length UTF-8 strings: h5py reads them back as str */
+static hid_t strtype(void) {
+  hid_t t = H5Tcopy(H5T_C_S1);
+  if (t >= 0 && (H5Tset_size(t, H5T_VARIABLE) < 0 ||
+                 H5Tset_cset(t, H5T_CSET_UTF8) < 0)) {
+    H5Tclose(t);
+    return -1;
+  }
+  return t;
+}
+
+/* }====================================================== */
+
+
+/*
+** {======================================================
+** Writing
+** =======================================================
+*/
+
+/* a scalar attribute; where names the object for the message */
+static int putattr(h5s *S, hid_t obj, const char *where, const char *name,
+                   hid_t ftype, hid_t mtype, const void *v) {
+  hid_t sp, a = -1;
+  int r = 0;
+  errno = 0;
+  sp = H5Screate(H5S_SCALAR);
+  if (sp >= 0) a = H5Acreate2(obj, name, ftype, sp, H5P_DEFAULT, H5P_DEFAULT);
+  if (a < 0 || H5Awrite(a, mtype, v) < 0)
+    r = fail(S, "cannot write attribute '%s' of '%s'", name, where);
+  if (a >= 0) H5Aclose(a);
+  if (sp >= 0) H5Sclose(sp);
+  return r;
+}
+
+static int putstr(h5s *S, hid_t obj, const char *where, const char *name,
+                  const char *s) {
+  hid_t t = strtype();
+  int r;
+  if (!s) s = "";
+  if (t < 0) return fail(S, "cannot make a string type");
+  r = putattr(S, obj, where, name, t, t, &s);
+  H5Tclose(t);
+  return r;
+}
+
+static int putmeta(h5s *S, const h5meta *meta) {
+  int64_t step = meta->step;
+  int dim = DIM;
+  hid_t f = S->file;
+  if (putstr(S, f, "/", "format", FORMAT) ||
+      putattr(S, f, "/", "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+              &meta->time) ||
+      putattr(S, f, "/", "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step) ||
+      putattr(S, f, "/", "cell", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
+              &meta->cell) ||
+      putattr(S, f, "/", "dim", H5T_STD_I32LE, H5T_NATIVE_INT, &dim) ||
+      putstr(S, f, "/", "units", meta->units) ||
+      putstr(S, f, "/", "scene", meta->scene))
+    return -1;
+  return 0;
+}
+
+/*
+** The scene's text goes in a scalar string dataset, not an attribute:
+** attributes are limited to 64 KiB in the default object header, and a
+** scene with an inline table of points can be larger than that.
+*/
+static int putsource(h5s *S, const char *src) {
+  hid_t t, sp = -1, d = -1;
+  int r = 0;
+  if (!src) return 0;
+  errno = 0;
+  t = strtype();
+  if (t >= 0) sp = H5Screate(H5S_SCALAR);
+  if (sp >= 0)
+    d = H5Dcreate2(S->file, SOURCE, t, sp, H5P_DEFAULT, H5P_DEFAULT,
+                   H5P_DEFAULT);
+  if (d < 0 || H5Dwrite(d, t, H5S_ALL, H5S_ALL, H5P_DEFAULT, &src) < 0)
+    r = fail(S, "cannot write dataset '%s'", SOURCE);
+  if (d >= 0) H5Dclose(d);
+  if (sp >= 0) H5Sclose(sp);
+  if (t >= 0) H5Tclose(t);
+  return r;
+}
+
+/*
+** The data of field f as one row-major (n, ncomp) block.  A single
+** component is already that, so it is written straight from the store.
+*/
+static const void *gather(h5s *S, const particles *ps, const pfield *f) {
+  size_t i, n = ps->n, nc = (size_t)f->ncomp;
+  int c;
+  if (nc == 1) return *f->slot[0];
+  for (c = 0; c < f->ncomp; c++) {
+    if (f->type == PF_INT32) {
+      const int32_t *a = *f->slot[c];
+      int32_t *b = S->buf;
+      for (i = 0; i < n; i++) b[i * nc + c] = a[i];
+    } else {
+      const double *a = *f->slot[c];
+      double *b = S->buf;
+      for (i = 0; i < n; i++) b[i * nc + c] = a[i];
+    }
+  }
+  return S->buf;
+}
+
+/* "xx,xy,yx,yy", or nothing when the field has no component names */
+static void compnames(const pfield *f, char *buf, size_t len) {
+  size_t k = 0;
+  int c;
+  buf[0] = '\0';
+  for (c = 0; c < f->ncomp && f->comp_names[c] && k < len; c++)
+    k += (size_t)snprintf(buf + k, len - k, "%s%s", c ? "," : "",
+                          f->comp_names[c]);
+}
+
+/*
+** The dataset creation properties.  An empty dataset stays contiguous:
+** a chunk must have at least one row, and there is nothing to compress.
+*/
+static hid_t dcpl(const pfield *f, size_t n) {
+  hsize_t chunk[2];
+  hid_t p = H5Pcreate(H5P_DATASET_CREATE);
+  if (p < 0 || n == 0) return p;
+  chunk[0] = n < CHUNKROWS ? n : CHUNKROWS;
+  chunk[1] = (hsize_t)f->ncomp;
+  if (H5Pset_chunk(p, f->ncomp == 1 ? 1 : 2, chunk) < 0 ||
+      H5Pset_shuffle(p) < 0 || H5Pset_deflate(p, DEFLATE) < 0) {
+    H5Pclose(p);
+    return -1;
+  }
+  return p;
+}
+
+static int putfield(h5s *S, const particles *ps, const pfield *f) {
+  hsize_t dims[2];
+  int isint = f->type == PF_INT32;
+  hid_t sp = -1, pl = -1, d = -1;
+  char names[PF_MAXCOMP * 32];
+  int r = -1;
+  errno = 0;
+  dims[0] = ps->n;
+  dims[1] = (hsize_t)f->ncomp;
+  sp = H5Screate_simple(f->ncomp == 1 ? 1 : 2, dims, NULL);
+  pl = dcpl(f, ps->n);
+  if (sp < 0 || pl < 0) {
+    fail(S, "cannot set up dataset '%s'", f->name);
+    goto out;
+  }
+  d = H5Dcreate2(S->file, f->name, isint ? H5T_STD_I32LE : H5T_IEEE_F64LE,
+                 sp, H5P_DEFAULT, pl, H5P_DEFAULT);
+  if (d < 0) {
+    fail(S, "cannot create dataset '%s'", f->name);
+    goto out;
+  }
+  if (ps->n > 0 &&
+      H5Dwrite(d, isint ? H5T_NATIVE_INT32 : H5T_NATIVE_DOUBLE, H5S_ALL,
+               H5S_ALL, H5P_DEFAULT, gather(S, ps, f)) < 0) {
+    fail(S, "cannot write dataset '%s'", f->name);
+    goto out;
+  }
+  if (putstr(S, d, f->name, "unit", f->unit)) goto out;
+  compnames(f, names, sizeof names);
+  if (names[0] && putstr(S, d, f->name, "components", names)) goto out;
+  r = 0;
+out:
+  if (d >= 0) H5Dclose(d);
+  if (pl >= 0) H5Pclose(pl);
+  if (sp >= 0) H5Sclose(sp);
+  return r;
+}
+
+/* the staging buffer, sized once for the widest output field */
+static int stage(h5s *S, const particles *ps) {
+  int f, w = 1;
+  for (f = 0; f < ps->nfields; f++)
+    if ((ps->fields[f].flags & PF_OUTPUT) && ps->fields[f].ncomp > w)
+      w = ps->fields[f].ncomp;
+  if (ps->n == 0 || w == 1) return 0;
+  errno = 0;
+  if (ps->n > SIZE_MAX / 8 / (size_t)w || room(S, ps->n * 8 * (size_t)w))
+    return fail(S, "cannot allocate the output buffer");
+  return 0;
+}
+
+static int deflate_ok(h5s *S) {
+  unsigned cfg = 0;
+  errno = 0;
+  if (H5Zfilter_avail(H5Z_FILTER_DEFLATE) <= 0 ||
+      H5Zget_filter_info(H5Z_FILTER_DEFLATE, &cfg) < 0 ||
+      !(cfg & H5Z_FILTER_CONFIG_ENCODE_ENABLED))
+    return fail(S, "this HDF5 library has no deflate (zlib) compression");
+  return 0;
+}
+
+/*
+** The file is built in memory (the core driver, no backing store) and
+** written out by us.  HDF5 1.10 does not survive a failed H5Fclose: the
+** half-closed file stays registered and the library crashes when it
+** shuts down at exit.  A full disk must not crash a long run, so HDF5
+** never touches the disk here; the price is holding the compressed file
+** in memory twice at the end (the driver's copy and the image).
+** Closing strongly closes whatever a failed step left open.  The name
+** given to HDF5 is the (empty) temp file: H5Fcreate probes that name on
+** disk first, and probing the old snapshot would read it all in.
+*/
+static int create(h5s *S, const char *tmp, const particles *ps) {
+  size_t raw = 0, grow;
+  int f;
+  hid_t fapl;
+  for (f = 0; f < ps->nfields; f++)
+    if (ps->fields[f].flags & PF_OUTPUT) raw += (size_t)ps->fields[f].ncomp;
+  /* grow in a few large steps: a quarter of the raw data at a time */
+  grow = raw > SIZE_MAX / 2 / (ps->n + 1) ? SIZE_MAX / 4 : raw * 2 * ps->n;
+  if (grow < ((size_t)1 << 20)) grow = (size_t)1 << 20;
+  errno = 0;
+  fapl = H5Pcreate(H5P_FILE_ACCESS);
+  if (fapl < 0 || H5Pset_fapl_core(fapl, grow, 0) < 0 ||
+      H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG) < 0) {
+    if (fapl >= 0) H5Pclose(fapl);
+    return fail(S, "cannot set up file access");
+  }
+  S->file = H5Fcreate(tmp, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  if (S->file < 0) fail(S, "cannot create the file in memory");
+  H5Pclose(fapl);
+  return S->file < 0 ? -1 : 0;
+}
+
+/* the finished file as bytes; closing it then frees the driver's copy */
+static int image(h5s *S, void **img, size_t *size) {
+  ssize_t len;
+  int r;
+  free(S->buf); /* staging is done: lower the peak */
+  S->buf = NULL;
+  S->bufsz = 0;
+  errno = 0;
+  /* H5Fget_file_image takes the bytes as they are: flush the cache first */
+  if (H5Fflush(S->file, H5F_SCOPE_GLOBAL) < 0)
+    return fail(S, "cannot flush the file in memory");
+  len = H5Fget_file_image(S->file, NULL, 0);
+  if (len < 0) return fail(S, "cannot finish the file in memory");
+  *img = malloc(len > 0 ? (size_t)len : 1);
+  if (!*img) return fail(S, "out of memory for the file image");
+  if (H5Fget_file_image(S->file, *img, (size_t)len) != len)
+    return fail(S, "cannot copy the file image");
+  *size = (size_t)len;
+  r = H5Fclose(S->file);
+  S->file = -1;
+  return r < 0 ? fail(S, "cannot close the file in memory") : 0;
+}
+
+static int build(h5s *S, const char *tmp, const particles *ps,
+                 const h5meta *meta, void **img, size_t *size) {
+  int f;
+  if (deflate_ok(S) || stage(S, ps) || create(S, tmp, ps) ||
+      putmeta(S, meta))
+    return -1;
+  for (f = 0; f < ps->nfields; f++)
+    if ((ps->fields[f].flags & PF_OUTPUT) && putfield(S, ps, &ps->fields[f]))
+      return -1;
+  if (putsource(S, meta->source)) return -1;
+  return image(S, img, size);
+}
+
+/*
+** Write the image to the temp file and make it durable before the
+** rename, so after a system crash the final name holds either the
+** previous snapshot or the new one, never a torn file.
+*/
+static int commit(h5s *S, int fd, const char *tmp, const char *img,
+                  size_t size) {
+  int r;
+  errno = 0;
+  while (size > 0) {
+    ssize_t k = write(fd, img, size);
+    if (k < 0 && errno == EINTR) continue;
+    if (k <= 0) {
+      if (k == 0) errno = EIO;
+      close(fd);
+      return fail(S, "cannot write file");
+    }
+    img += k;
+    size -= (size_t)k;
+  }
+  if (fsync(fd) != 0) {
+    close(fd);
+    return fail(S, "cannot sync file");
+  }
+  r = close(fd);
+  if (r != 0) return fail(S, "cannot close file");
+  errno = 0;
+  if (rename(tmp, S->path) != 0)
+    return fail(S, "cannot rename the temp file %s", tmp);
+  return 0;
+}
+
+/* the temp file is opened first, so a bad directory fails before work */
+int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
+                 char *err, size_t errlen) {
+  h5s S;
+  char *tmp;
+  void *img = NULL;
+  size_t size = 0;
+  int fd = -1, r = -1;
+  begin(&S, path, err, errlen);
+  errno = 0;
+  tmp = malloc(strlen(path) + 5);
+  if (!tmp) {
+    fail(&S, "out of memory");
+    goto out;
+  }
+  sprintf(tmp, "%s.tmp", path);
+  fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) {
+    fail(&S, "cannot create file");
+    goto out;
+  }
+  if (build(&S, tmp, ps, meta, &img, &size) == 0) {
+    r = commit(&S, fd, tmp, img, size);
+    fd = -1; /* commit closed it */
+  }
+out:
+  end(&S);
+  if (fd >= 0) close(fd);
+  if (r != 0 && tmp) remove(tmp);
+  free(img);
+  free(tmp);
+  return r;
+}
+
+/* }====================================================== */
+
+
+/*
+** {======================================================
+** Reading
+** =======================================================
+*/
+
+/* a scalar attribute of any numeric type, converted to mtype */
+static int getattr(h5s *S, const char *name, hid_t mtype, void *v) {
+  hid_t a;
+  herr_t e = -1;
+  errno = 0;
+  a = H5Aopen(S->file, name, H5P_DEFAULT);
+  if (a >= 0) e = H5Aread(a, mtype, v);
+  if (e < 0) fail(S, "cannot read attribute '%s'", name);
+  if (a >= 0) H5Aclose(a);
+  return e < 0 ? -1 : 0;
+}
+
+/*
+** A string attribute, fixed or variable length, into buf (truncated to
+** len - 1).  Absent is not an error here: buf is left "" and 1 returned.
+*/
+static int getstr(h5s *S, hid_t obj, const char *where, const char *name,
+                  char *buf, size_t len) {
+  hid_t a, ft = -1, mt = -1;
+  int r = -1;
+  buf[0] = '\0';
+  errno = 0;
+  if (H5Aexists(obj, name) == 0) return 1;
+  a = H5Aopen(obj, name, H5P_DEFAULT);
+  if (a >= 0) ft = H5Aget_type(a);
+  if (ft >= 0 && H5Tget_class(ft) != H5T_STRING) {
+    errno = 0;
+    fail(S, "attribute '%s' of '%s' is not a string", name, where);
+    goto out;
+  }
+  if (ft >= 0 && H5Tis_variable_str(ft) > 0) {
+    char *s = NULL;
+    mt = strtype();
+    if (mt >= 0 && H5Aread(a, mt, &s) >= 0) {
+      snprintf(buf, len, "%s", s ? s : "");
+      H5free_memory(s);
+      r = 0;
+    }
+  } else if (ft >= 0) {
+    mt = H5Tcopy(H5T_C_S1); /* HDF5 converts to our size, NUL-terminated */
+    if (mt >= 0 && H5Tset_size(mt, len) >= 0 && H5Aread(a, mt, buf) >= 0)
+      r = 0;
+  }
+  if (r < 0) fail(S, "cannot read attribute '%s' of '%s'", name, where);
+out:
+  if (mt >= 0) H5Tclose(mt);
+  if (ft >= 0) H5Tclose(ft);
+  if (a >= 0) H5Aclose(a);
+  return r;
+}
+
+static int getmeta(h5s *S, h5meta *meta) {
+  char fmt[64];
+  int64_t step;
+  int dim;
+  int r = getstr(S, S->file, "/", "format", fmt, sizeof fmt);
+  if (r < 0) return -1;
+  errno = 0;
+  if (r > 0 || strcmp(fmt, FORMAT) != 0)
+    return fail(S, "not an mvmpm snapshot (format '%s', expected '%s')", fmt,
+                FORMAT);
+  if (getattr(S, "dim", H5T_NATIVE_INT, &dim)) return -1;
+  if (dim != DIM)
+    return fail(S, "the snapshot is %d-D but this build is %d-D", dim, DIM);
+  if (getattr(S, "time", H5T_NATIVE_DOUBLE, &meta->time) ||
+      getattr(S, "step", H5T_NATIVE_INT64, &step) ||
+      getattr(S, "cell", H5T_NATIVE_DOUBLE, &meta->cell))
+    return -1;
+  meta->step = (long)step;
+  return 0;
+}
+
+/* shape and type of a field dataset, checked against what a field can be */
+static int shape(h5s *S, hid_t d, const char *name, hsize_t *n, int *ncomp,
+                 int *type) {
+  hsize_t dims[2] = {0, 1};
+  hid_t sp, t;
+  int rank = -1;
+  H5T_class_t cl = H5T_NO_CLASS;
+  size_t size = 0;
+  errno = 0;
+  sp = H5Dget_space(d);
+  if (sp >= 0) rank = H5Sget_simple_extent_ndims(sp);
+  if (rank >= 1 && rank <= 2) H5Sget_simple_extent_dims(sp, dims, NULL);
+  if (sp >= 0) H5Sclose(sp);
+  t = H5Dget_type(d);
+  if (t >= 0) {
+    cl = H5Tget_class(t);
+    size = H5Tget_size(t);
+    H5Tclose(t);
+  }
+  if (sp < 0 || t < 0) return fail(S, "cannot inspect dataset '%s'", name);
+  errno = 0;
+  if (rank < 1 || rank > 2)
+    return fail(S, "dataset '%s' has rank %d, a field has 1 or 2", name, rank);
+  if (dims[1] < 1 || dims[1] > PF_MAXCOMP)
+    return fail(S, "dataset '%s' has %llu components, at most %d allowed",
+                name, (unsigned long long)dims[1], PF_MAXCOMP);
+  if (cl == H5T_FLOAT) *type = PF_DOUBLE;
+  else if (cl == H5T_INTEGER && size <= 4) *type = PF_INT32;
+  else
+    return fail(S, "dataset '%s' is neither floating point nor a 32-bit "
+                "integer", name);
+  *n = dims[0];
+  *ncomp = (int)dims[1];
+  return 0;
+}
+
+/* the store's field for a dataset: the built-in one, or a new one */
+static int field(h5s *S, particles *ps, hid_t d, const char *name,
+                 int ncomp, int type) {
+  char unit[sizeof ps->fields[0].unit];
+  int f = particles_find(ps, name);
+  errno = 0;
+  if (f >= 0) {
+    if (ps->fields[f].type != type)
+      return fail(S, "dataset '%s' holds %s, the field holds %s", name,
+                  type == PF_INT32 ? "integers" : "reals",
+                  ps->fields[f].type == PF_INT32 ? "integers" : "reals");
+    if (ps->fields[f].ncomp != ncomp)
+      return fail(S, "dataset '%s' has %d components, the field has %d",
+                  name, ncomp, ps->fields[f].ncomp);
+    return f;
+  }
+  if (strlen(name) >= sizeof ps->fields[0].name)
+    return fail(S, "dataset name '%s' is too long for a field", name);
+  if (getstr(S, d, name, "unit", unit, sizeof unit) < 0) return -1;
+  f = particles_add_field(ps, name, ncomp, type, unit, PF_OUTPUT);
+  errno = 0;
+  if (f < 0)
+    return fail(S, "cannot add field '%s' (more than %d fields or out of "
+                "memory)", name, PF_MAXFIELDS);
+  return f;
+}
+
+/* read the whole dataset and scatter its columns into the store */
+static int fill(h5s *S, particles *ps, hid_t d, int f, size_t n) {
+  const pfield *pf = &ps->fields[f];
+  size_t i, nc = (size_t)pf->ncomp;
+  hid_t mt = pf->type == PF_INT32 ? H5T_NATIVE_INT32 : H5T_NATIVE_DOUBLE;
+  void *dst = nc == 1 ? *pf->slot[0] : NULL;
+  int c;
+  if (n == 0) return 0;
+  errno = 0;
+  if (!dst) {
+    if (room(S, n * nc * 8)) return fail(S, "out of memory");
+    dst = S->buf;
+  }
+  if (H5Dread(d, mt, H5S_ALL, H5S_ALL, H5P_DEFAULT, dst) < 0)
+    return fail(S, "cannot read dataset '%s'", pf->name);
+  for (c = 0; nc > 1 && c < pf->ncomp; c++) {
+    if (pf->type == PF_INT32) {
+      const int32_t *a = S->buf;
+      int32_t *b = *pf->slot[c];
+      for (i = 0; i < n; i++) b[i] = a[i * nc + c];
+    } else {
+      const double *a = S->buf;
+      double *b = *pf->slot[c];
+      for (i = 0; i < n; i++) b[i] = a[i * nc + c];
+    }
+  }
+  return 0;
+}
+
+/*
+** One dataset.  The first (first[0] still empty) fixes the particle
+** count and sizes the store, so fields added afterwards are allocated at
+** that capacity; its name is kept for the message when counts differ.
+*/
+static int getfield(h5s *S, particles *ps, hid_t d, const char *name,
+                    hsize_t *n, char *first, size_t firstlen) {
+  hsize_t rows = 0;
+  int ncomp = 1, type = PF_DOUBLE, f;
+  if (shape(S, d, name, &rows, &ncomp, &type)) return -1;
+  errno = 0;
+  if (!first[0]) {
+    if (rows > SIZE_MAX / 8 / PF_MAXCOMP || particles_reserve(ps, rows))
+      return fail(S, "cannot make room for %llu particles",
+                  (unsigned long long)rows);
+    *n = rows;
+    snprintf(first, firstlen, "%s", name);
+  } else if (rows != *n)
+    return fail(S, "dataset '%s' has %llu rows but '%s' has %llu", name,
+                (unsigned long long)rows, first, (unsigned long long)*n);
+  f = field(S, ps, d, name, ncomp, type);
+  return f < 0 ? -1 : fill(S, ps, d, f, (size_t)rows);
+}
+
+/*
+** Every dataset in the root group except the scene's text is a field;
+** other objects (groups a later version may add) are passed over.
+*/
+static int getfields(h5s *S, particles *ps) {
+  H5G_info_t gi;
+  hsize_t k, n = 0;
+  char name[256], first[256] = "";
+  errno = 0;
+  if (H5Gget_info(S->file, &gi) < 0)
+    return fail(S, "cannot list the root group");
+  for (k = 0; k < gi.nlinks; k++) {
+    ssize_t len;
+    hid_t obj;
+    int r = 0;
+    errno = 0;
+    len = H5Lget_name_by_idx(S->file, ".", H5_INDEX_NAME, H5_ITER_INC, k,
+                             name, sizeof name, H5P_DEFAULT);
+    if (len < 0) return fail(S, "cannot list the root group");
+    if ((size_t)len >= sizeof name)
+      return fail(S, "object name '%s...' is too long", name);
+    if (strcmp(name, SOURCE) == 0) continue;
+    obj = H5Oopen(S->file, name, H5P_DEFAULT);
+    if (obj < 0) return fail(S, "cannot open '%s'", name);
+    if (H5Iget_type(obj) == H5I_DATASET)
+      r = getfield(S, ps, obj, name, &n, first, sizeof first);
+    H5Oclose(obj);
+    if (r) return -1;
+  }
+  ps->n = (size_t)n;
+  return 0;
+}
+
+int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
+                size_t errlen) {
+  h5s S;
+  h5meta dummy;
+  int r;
+  if (!meta) meta = &dummy;
+  begin(&S, path, err, errlen);
+  meta->units = meta->scene = meta->source = NULL;
+  errno = 0;
+  if (ps->n != 0) {
+    r = fail(&S, "cannot read into a store that already holds particles");
+  } else {
+    S.file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (S.file < 0) r = fail(&S, "cannot open file");
+    else r = (getmeta(&S, meta) || getfields(&S, ps)) ? -1 : 0;
+  }
+  end(&S);
+  if (r != 0) ps->n = 0;
+  return r;
+}
+
+/* }====================================================== */

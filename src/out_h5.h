@@ -1,0 +1,59 @@
+/*
+** out_h5.h - particle snapshots in HDF5.
+** One file per snapshot; every field flagged PF_OUTPUT is written as a
+** chunked, deflate-compressed dataset; attributes carry time, step,
+** units and the scene's source.  Written to "<path>.tmp" and renamed,
+** so a crash never leaves a corrupt file under the final name.
+**
+** Layout ("mvmpm-snapshot-1"), all in the root group:
+**   dataset NAME per PF_OUTPUT field: shape (n) for one component, else
+**     (n, ncomp), row i = particle i; IEEE F64LE or STD I32LE; chunks of
+**     min(n, 65536) rows, shuffle + deflate level 4 (n == 0: contiguous,
+**     unfiltered).  Attributes "unit" (string) and, when the field names
+**     its components, "components" (e.g. "xx,yy,xy,zz").
+**   dataset "scene_source": the scene's text, a scalar string; absent
+**     when meta->source is NULL.  A dataset, not an attribute, because a
+**     scene can exceed the 64 KiB an attribute may hold.
+**   root attributes: "format" = "mvmpm-snapshot-1", "time" (F64),
+**     "step" (I64), "cell" (F64), "dim" (I32), "units", "scene".
+** Strings are variable-length UTF-8 (h5py reads them as str).
+**
+** The file is built in memory and written with write/fsync/rename: HDF5
+** 1.10 crashes at exit after a failed H5Fclose, so it never does the
+** disk I/O.  The cost is about twice the compressed file in memory for
+** a moment.  HDF5's error printing is off during both calls; the message
+** in err names the file, what failed and why ("No space left on device").
+*/
+#ifndef mvmpm_out_h5_h
+#define mvmpm_out_h5_h
+
+#include <stddef.h>
+#include "particles.h"
+
+typedef struct h5meta {
+  double time;
+  long step;
+  double cell;            /* grid spacing */
+  const char *units;      /* e.g. "nondimensional" or "SI" */
+  const char *scene;      /* scene file name */
+  const char *source;     /* the scene's source text (may be NULL) */
+} h5meta;
+
+/* 0 on success; -1 with a message naming the file in err */
+int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
+                 char *err, size_t errlen);
+
+/* Read a snapshot into an initialised, empty store: the built-in fields
+** are filled, other datasets become run-time fields.  meta->time/step/cell
+** are filled; string members are left NULL.  0 or -1 with err.
+** Every dataset must have the same number of rows, and one matching a
+** field already in the store must have its type and component count.
+** New fields are flagged PF_OUTPUT, with the stored unit but no
+** component names (pfield only points to names, it cannot own them).
+** Fields of the store the file lacks are left zero (F included), and
+** the file's "dim" must be this build's DIM.  On failure ps->n is 0 and
+** fields may have been added; particles_free releases it as usual. */
+int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
+                size_t errlen);
+
+#endif

@@ -1,0 +1,135 @@
+/*
+** p2g.c - particles to grid, per velocity field.
+**   m_i = sum_p S_ip m_p            p_i = sum_p S_ip m_p v_p
+**   f_i = -sum_p V_p sigma_p . grad S_ip + sum_p S_ip m_p g
+** Every particle adds to the centre-of-mass field (dense arrays); at
+** shared nodes it also adds to its own field's slot, with the mass
+** gradient sum_p m_p grad S_ip that gives the contact normals.
+*/
+#include "sim.h"
+#include "stencil.h"
+
+/* Shared nodes: a node is shared when particles of two fields reach it.
+** The first field seen owns the node; the second creates slots. */
+int p2g_mark(sim *s) {
+  grid *g = &s->g;
+  const particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  int32_t node[STENCIL_MAX];
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    int32_t f = bd[ps->body[i]].field;
+    double x[DIM];
+    int k, nn, d;
+    for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
+    nn = stencil_nodes(g, s->shape, x, node);
+    for (k = 0; k < nn; k++) {
+      int32_t o = g->owner[node[k]];
+      if (o == f) continue;
+      if (o < 0) g->owner[node[k]] = f;
+      else if (grid_slot_add(g, node[k], f) < 0) return -1;
+    }
+  }
+  return 0;
+}
+
+STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
+  grid *g = &s->g;
+  const particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  const double gx = s->gravity[0], gy = s->gravity[1], lp = s->lp;
+  stencil st;
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
+    double mp = ps->m[i], vx = ps->v[0][i], vy = ps->v[1][i];
+    double J = ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
+    double V = J * ps->vol0[i];
+    double sxx = V * ps->s[S_XX][i], syy = V * ps->s[S_YY][i];
+    double sxy = V * ps->s[S_XY][i];
+    int32_t f = bd[ps->body[i]].field;
+    int k;
+    stencil_eval(g, kind, x, lp, &st);
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k];
+      double wm = w * mp;
+      double fx = wm * gx - (sxx * dx + sxy * dy);
+      double fy = wm * gy - (sxy * dx + syy * dy);
+      g->m[n] += wm;
+      g->p[0][n] += wm * vx;
+      g->p[1][n] += wm * vy;
+      g->f[0][n] += fx;
+      g->f[1][n] += fy;
+      if (shared && g->head[n] >= 0) {
+        int32_t sl = grid_slot(g, n, f);
+        g->sm[sl] += wm;
+        g->sp[0][sl] += wm * vx;
+        g->sp[1][sl] += wm * vy;
+        g->sf[0][sl] += fx;
+        g->sf[1][sl] += fy;
+        g->sg[0][sl] += mp * dx;
+        g->sg[1][sl] += mp * dy;
+      }
+    }
+  }
+}
+
+void p2g(sim *s) {
+  int shared = s->g.nshared > 0;
+  switch (s->shape) {
+  case SHAPE_GIMP:
+    if (shared) p2g_kind(s, SHAPE_GIMP, 1); else p2g_kind(s, SHAPE_GIMP, 0);
+    break;
+  case SHAPE_BSPLINE2:
+    if (shared) p2g_kind(s, SHAPE_BSPLINE2, 1);
+    else p2g_kind(s, SHAPE_BSPLINE2, 0);
+    break;
+  default:
+    if (shared) p2g_kind(s, SHAPE_LINEAR, 1); else p2g_kind(s, SHAPE_LINEAR, 0);
+  }
+}
+
+/* MUSL: the particles' updated momenta, mapped back with the same
+** (old-position) weights; p is free again after solve_velocity. */
+STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
+  grid *g = &s->g;
+  const particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  stencil st;
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
+    double mp = ps->m[i], vx = ps->v[0][i], vy = ps->v[1][i];
+    int32_t f = bd[ps->body[i]].field;
+    int k;
+    stencil_eval(g, kind, x, s->lp, &st);
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      double wm = st.w[k] * mp;
+      g->p[0][n] += wm * vx;
+      g->p[1][n] += wm * vy;
+      if (shared && g->head[n] >= 0) {
+        int32_t sl = grid_slot(g, n, f);
+        g->sp[0][sl] += wm * vx;
+        g->sp[1][sl] += wm * vy;
+      }
+    }
+  }
+}
+
+void p2g_momentum(sim *s) {
+  int shared = s->g.nshared > 0;
+  switch (s->shape) {
+  case SHAPE_GIMP:
+    if (shared) remap_kind(s, SHAPE_GIMP, 1); else remap_kind(s, SHAPE_GIMP, 0);
+    break;
+  case SHAPE_BSPLINE2:
+    if (shared) remap_kind(s, SHAPE_BSPLINE2, 1);
+    else remap_kind(s, SHAPE_BSPLINE2, 0);
+    break;
+  default:
+    if (shared) remap_kind(s, SHAPE_LINEAR, 1);
+    else remap_kind(s, SHAPE_LINEAR, 0);
+  }
+}

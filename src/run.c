@@ -1,0 +1,253 @@
+/*
+** run.c - stepping a simulation from Lua: between steps it evaluates the
+** drives (Lua functions of time, once per step), records the diagnostics
+** row, calls the scene's callbacks, writes snapshots, shows progress, and
+** honours Ctrl-C.  Nothing here runs inside a step.
+*/
+#include <errno.h>
+#include <stdlib.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+#include "interrupt.h"
+#include "lsim.h"
+#include "out_h5.h"
+
+static double now(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+/* mkdir -p */
+static int mkdirs(const char *path, char *err, size_t errlen) {
+  char buf[1024];
+  size_t k, n = strlen(path);
+  if (n >= sizeof buf) { snprintf(err, errlen, "%s: path too long", path); return -1; }
+  memcpy(buf, path, n + 1);
+  for (k = 1; k <= n; k++)
+    if (buf[k] == '/' || buf[k] == 0) {
+      char c = buf[k];
+      buf[k] = 0;
+      if (mkdir(buf, 0777) && errno != EEXIST) {
+        snprintf(err, errlen, "%s: cannot create directory (%s)", buf, strerror(errno));
+        return -1;
+      }
+      buf[k] = c;
+    }
+  return 0;
+}
+
+static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
+    "dissipated", "boundary_work", "total", "residual", "px", "py", "angmom",
+    "jmin", "jmax", "particles"};
+#define NCOLS (int)(sizeof cols / sizeof cols[0])
+
+static void csv_row(lua_State *L, lsim *ls) {
+  sim *s = &ls->s;
+  double v[NCOLS], tot = sim_total(s);
+  char err[256];
+  v[0] = (double)s->step; v[1] = s->t; v[2] = s->dt;
+  v[3] = s->e.kinetic; v[4] = s->e.strain; v[5] = s->e.friction;
+  v[6] = s->e.boundary; v[7] = tot;
+  v[8] = s->e.initial + s->e.boundary - s->e.friction - tot;
+  v[9] = s->e.mom[0]; v[10] = s->e.mom[1]; v[11] = s->e.angmom;
+  v[12] = s->e.jmin; v[13] = s->e.jmax; v[14] = (double)s->ps.n;
+  if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
+}
+
+int run_snapshot(lua_State *L, lsim *ls, const char *path) {
+  h5meta meta;
+  char err[512];
+  memset(&meta, 0, sizeof meta);
+  meta.time = ls->s.t;
+  meta.step = ls->s.step;
+  meta.cell = ls->s.g.h;
+  meta.units = ls->units;
+  meta.scene = ls->scene;
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
+  meta.source = lua_tostring(L, -1);
+  if (out_h5_write(path, &ls->s.ps, &meta, err, sizeof err)) {
+    lua_pop(L, 1);
+    return luaL_error(L, "%s", err);
+  }
+  lua_pop(L, 1);
+  return 0;
+}
+
+static void snapshot(lua_State *L, lsim *ls) {
+  char path[1100], name[64], err[512];
+  xdmf_entry *e;
+  snprintf(name, sizeof name, "particles_%06d.h5", ls->nsnap);
+  snprintf(path, sizeof path, "%s/%s", ls->outdir, name);
+  run_snapshot(L, ls, path);
+  if (ls->nsnap == ls->snapcap) {
+    int cap = ls->snapcap ? 2 * ls->snapcap : 64;
+    void *p = realloc(ls->snaps, cap * sizeof *ls->snaps);
+    if (!p) luaL_error(L, "output: out of memory");
+    ls->snaps = p;
+    ls->snapcap = cap;
+  }
+  e = &ls->snaps[ls->nsnap++];
+  snprintf(e->file, sizeof e->file, "%s", name);
+  e->time = ls->s.t;
+  e->n = ls->s.ps.n;
+  snprintf(path, sizeof path, "%s/particles.xmf", ls->outdir);
+  if (out_xdmf_write(path, ls->snaps, ls->nsnap, &ls->s.ps, err, sizeof err))
+    luaL_error(L, "%s", err);
+}
+
+static void out_start(lua_State *L, lsim *ls) {
+  char err[512], path[1100];
+  if (!ls->out_enabled || !ls->outdir[0] || ls->csv_open) return;
+  if (mkdirs(ls->outdir, err, sizeof err)) luaL_error(L, "%s", err);
+  if (ls->csv_every > 0) {
+    snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
+    if (out_csv_open(&ls->csv, path, cols, NCOLS, err, sizeof err))
+      luaL_error(L, "%s", err);
+    csv_row(L, ls);
+  }
+  ls->csv_open = 1;
+  if (ls->out_every > 0) {
+    snapshot(L, ls);
+    ls->out_next = ls->s.t + ls->out_every;
+  }
+}
+
+int run_close(lua_State *L, lsim *ls) {
+  char err[512];
+  if (ls->csv_open && ls->csv.f && out_csv_close(&ls->csv, err, sizeof err)) {
+    ls->csv_open = 0;
+    return luaL_error(L, "%s", err);
+  }
+  return 0;
+}
+
+/* drives and moving walls given as functions of time */
+static void drives(lua_State *L, int simidx, lsim *ls) {
+  int d, k;
+  if (ls->drives) {
+    lsim_uv(L, simidx, "drives");
+    lua_pushnil(L);
+    while (lua_next(L, -2)) {
+      int b = (int)lua_tointeger(L, -2);
+      lua_pushnumber(L, ls->s.t);
+      lua_call(L, 1, DIM);
+      for (d = 0; d < DIM; d++) {
+        int isnum;
+        double v = lua_tonumberx(L, d - DIM, &isnum);
+        if (!isnum || !isfinite(v))
+          luaL_error(L, "drive of body '%s' returned a non-number at t = %g",
+                     ls->s.bodies[b].name, ls->s.t);
+        ls->s.bodies[b].vdrive[d] = v;
+      }
+      lua_pop(L, DIM);
+    }
+    lua_pop(L, 1);
+  }
+  if (ls->sidefns) {
+    lsim_uv(L, simidx, "sidefn");
+    for (k = 0; k < NSIDES; k++) {
+      if (lua_rawgeti(L, -1, k) != LUA_TFUNCTION) { lua_pop(L, 1); continue; }
+      lua_pushnumber(L, ls->s.t);
+      lua_call(L, 1, DIM);
+      for (d = 0; d < DIM; d++) {
+        int isnum;
+        double v = lua_tonumberx(L, d - DIM, &isnum);
+        if (!isnum || !isfinite(v))
+          luaL_error(L, "velocity of side %d returned a non-number at t = %g", k + 1, ls->s.t);
+        ls->s.sides[k].v[d] = v;
+      }
+      lua_pop(L, DIM);
+    }
+    lua_pop(L, 1);
+  }
+}
+
+static void callbacks(lua_State *L, int simidx, lsim *ls) {
+  lua_Integer k, n;
+  lsim_uv(L, simidx, "every");
+  n = luaL_len(L, -1);
+  for (k = 1; k <= n; k++) {
+    int due;
+    lua_rawgeti(L, -1, k);
+    lua_getfield(L, -1, "time");
+    if (!lua_isnil(L, -1)) {
+      double dt = lua_tonumber(L, -1);
+      lua_getfield(L, -2, "next");
+      due = ls->s.t >= lua_tonumber(L, -1) - 1e-12 * dt;
+      if (due) {
+        double next = lua_tonumber(L, -1);
+        while (next <= ls->s.t + 1e-12 * dt) next += dt;
+        lua_pushnumber(L, next);
+        lua_setfield(L, -4, "next");
+      }
+    } else {
+      lua_getfield(L, -2, "steps");
+      lua_Integer st = lua_tointeger(L, -1);
+      lua_getfield(L, -3, "next");
+      due = ls->s.step >= lua_tointeger(L, -1);
+      if (due) {
+        lua_pushinteger(L, ls->s.step + st);
+        lua_setfield(L, -5, "next");
+      }
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 2);
+    if (due) {
+      lua_getfield(L, -1, "fn");
+      lua_pushvalue(L, simidx);
+      lua_call(L, 1, 0);
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+}
+
+static void progress(lsim *ls, double t_end, double t0, double wall0,
+                     long step0, int last) {
+  static double shown;
+  double w = now(), rate, eta;
+  if (!last && w - shown < 0.25) return;
+  shown = w;
+  rate = (ls->s.step - step0) / (w - wall0 + 1e-9);
+  eta = (ls->s.t > t0 && isfinite(t_end))
+            ? (w - wall0) * (t_end - ls->s.t) / (ls->s.t - t0) : 0;
+  fprintf(stderr, "\rstep %ld  t %.4g / %.4g  dt %.3g  %.0f steps/s  ETA %.0f s   %s",
+          ls->s.step, ls->s.t, t_end, ls->s.dt, rate, eta > 0 ? eta : 0,
+          last ? "\n" : "");
+  fflush(stderr);
+}
+
+int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
+  lsim *ls = lsim_check(L, simidx);
+  sim *s = &ls->s;
+  double t0 = s->t, wall0 = now();
+  long step0 = s->step, k = 0;
+  int show = ls->progress && isatty(2);
+  simidx = lua_absindex(L, simidx);
+  if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
+  out_start(L, ls);
+  while ((max_steps < 0 || k < max_steps) && s->t < t_end - 1e-12 * (1 + fabs(t_end))) {
+    if (ls->drives || ls->sidefns) drives(L, simidx, ls);
+    if (sim_step(s)) luaL_error(L, "%s", s->err);
+    k++;
+    if (ls->csv_open && ls->csv_every > 0 && s->step % ls->csv_every == 0) csv_row(L, ls);
+    if (ls->nevery) callbacks(L, simidx, ls);
+    if (ls->csv_open && ls->out_every > 0 && s->t >= ls->out_next - 1e-9 * ls->out_every) {
+      snapshot(L, ls);
+      while (ls->out_next <= s->t + 1e-9 * ls->out_every) ls->out_next += ls->out_every;
+    }
+    if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 0);
+    if (interrupt_pending()) {
+      interrupt_clear();
+      if (show) progress(ls, t_end, t0, wall0, step0, 1);
+      luaL_error(L, "interrupted at step %d, t = %f", (int)s->step, s->t);
+    }
+  }
+  if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 1);
+  return 0;
+}

@@ -1,0 +1,285 @@
+/*
+** sim.c - the simulation object, set-up, and the step as a sequence of
+** phases (each phase lives in the file named after it).
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "shape.h"
+#include "sim.h"
+
+int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
+             const int periodic[DIM], int shape, int ppc) {
+  int k, d;
+  memset(s, 0, sizeof *s);
+  s->shape = shape;
+  s->update = UPDATE_MUSL;
+  s->flip = 1.0;
+  s->cfl = 0.4;
+  s->t_end = 1.0;
+  s->gap_check = 1;
+  s->mcut_rel = 1e-9;
+  s->sort_every = 20;
+  s->ppc = ppc;
+  s->lp = 0.5 / ppc;
+  particles_init(&s->ps);
+  if (grid_init(&s->g, lo, hi, h, periodic, shape_pad(shape))) {
+    snprintf(s->err, sizeof s->err, "out of memory for the grid");
+    return -1;
+  }
+  for (k = 0; k < NSIDES; k++) {
+    d = k / 2;
+    s->sides[k].kind = periodic[d] ? SIDE_PERIODIC : SIDE_WALL;
+    s->sides[k].next = (size_t)s->g.n[1 - d];
+    s->sides[k].ext = malloc(s->sides[k].next * sizeof(double));
+    if (!s->sides[k].ext) return -1;
+  }
+  return 0;
+}
+
+void sim_free(sim *s) {
+  int k;
+  grid_free(&s->g);
+  particles_free(&s->ps);
+  for (k = 0; k < NSIDES; k++) free(s->sides[k].ext);
+  free(s->mats);
+  free(s->bodies);
+  free(s->bmat);
+  free(s->fdriven);
+  free(s->laws);
+  free(s->flaw);
+  memset(s, 0, sizeof *s);
+}
+
+int sim_add_material(sim *s, const material *m) {
+  if (s->nmat == s->matcap) {
+    int cap = s->matcap ? 2 * s->matcap : 8;
+    material *p = realloc(s->mats, cap * sizeof *p);
+    if (!p) return -1;
+    s->mats = p;
+    s->matcap = cap;
+  }
+  s->mats[s->nmat] = *m;
+  s->mats[s->nmat].id = s->nmat;
+  if (m->model->setup && m->model->setup(&s->mats[s->nmat], &s->ps)) {
+    snprintf(s->err, sizeof s->err, "material %s: cannot set up its state",
+             m->name);
+    return -1;
+  }
+  return s->nmat++;
+}
+
+static int grow_fields(sim *s, int nfield) {
+  int32_t *fd;
+  unsigned char *fl;
+  int k;
+  if (nfield <= s->nfield) return 0;
+  fd = realloc(s->fdriven, nfield * sizeof *fd);
+  if (!fd) return -1;
+  s->fdriven = fd;
+  fl = realloc(s->flaw, nfield);
+  if (!fl) return -1;
+  s->flaw = fl;
+  for (k = s->nfield; k < nfield; k++) { fd[k] = -1; fl[k] = 0; }
+  s->nfield = nfield;
+  return 0;
+}
+
+int sim_add_body(sim *s, const char *name, int32_t mat, int32_t field) {
+  body *b;
+  if (s->nbody == s->bodycap) {
+    int cap = s->bodycap ? 2 * s->bodycap : 16;
+    body *p = realloc(s->bodies, cap * sizeof *p);
+    int32_t *q = realloc(s->bmat, cap * sizeof *q);
+    if (!p || !q) { free(p == s->bodies ? NULL : p); return -1; }
+    s->bodies = p;
+    s->bmat = q;
+    s->bodycap = cap;
+  }
+  if (field < 0) field = s->nfield;
+  if (grow_fields(s, field + 1)) return -1;
+  b = &s->bodies[s->nbody];
+  memset(b, 0, sizeof *b);
+  snprintf(b->name, sizeof b->name, "%s", name);
+  b->material = mat;
+  b->field = field;
+  s->bmat[s->nbody] = mat;
+  return s->nbody++;
+}
+
+static int lawcmp(const void *x, const void *y) {
+  const pairlaw *a = x, *b = y;
+  if (a->a != b->a) return a->a < b->a ? -1 : 1;
+  return (a->b > b->b) - (a->b < b->b);
+}
+
+int sim_set_law(sim *s, int32_t a, int32_t b, double mu) {
+  pairlaw key;
+  int k;
+  if (a > b) { int32_t t = a; a = b; b = t; }
+  for (k = 0; k < s->nlaw; k++)
+    if (s->laws[k].a == a && s->laws[k].b == b) { s->laws[k].mu = mu; return 0; }
+  if (s->nlaw == s->lawcap) {
+    int cap = s->lawcap ? 2 * s->lawcap : 16;
+    pairlaw *p = realloc(s->laws, cap * sizeof *p);
+    if (!p) return -1;
+    s->laws = p;
+    s->lawcap = cap;
+  }
+  key.a = a; key.b = b; key.mu = mu;
+  s->laws[s->nlaw++] = key;
+  qsort(s->laws, s->nlaw, sizeof *s->laws, lawcmp);
+  s->flaw[a] = s->flaw[b] = 1;
+  return 0;
+}
+
+double sim_law(const sim *s, int32_t a, int32_t b) {
+  pairlaw key, *hit;
+  if (b < 0 || !(s->flaw[a] && s->flaw[b])) return s->mu_default;
+  if (a > b) { int32_t t = a; a = b; b = t; }
+  key.a = a; key.b = b;
+  hit = bsearch(&key, s->laws, s->nlaw, sizeof *s->laws, lawcmp);
+  return hit ? hit->mu : s->mu_default;
+}
+
+long sim_add_particle(sim *s, int32_t b, const double x[DIM],
+                      const double v[DIM], double vol) {
+  particles *ps = &s->ps;
+  size_t i = particles_push(ps);
+  const material *m;
+  int d;
+  if (i == (size_t)-1) return -1;
+  for (d = 0; d < DIM; d++) {
+    ps->x[d][i] = x[d];
+    ps->v[d][i] = v[d];
+  }
+  ps->body[i] = b;
+  ps->vol0[i] = vol;
+  ps->lp[i] = s->lp;
+  m = &s->mats[s->bodies[b].material];
+  ps->m[i] = m->rho * vol;
+  return (long)i;
+}
+
+double sim_stable_dt(const sim *s) {
+  double c = 0;
+  int k;
+  for (k = 0; k < s->nmat; k++)
+    if (s->mats[k].c > c) c = s->mats[k].c;
+  /* the wave speed grows as the material is stretched: c ~ sqrt(J) */
+  if (s->e.jmax > 1) c *= sqrt(s->e.jmax);
+  return s->cfl * s->g.h / (c + s->vmax);
+}
+
+void sim_measure(sim *s) {
+  const particles *ps = &s->ps;
+  size_t i;
+  int d;
+  double ke = 0, se = 0, am = 0, v2max = 0;
+  for (d = 0; d < DIM; d++) s->e.mom[d] = 0;
+  for (i = 0; i < ps->n; i++) {
+    double v2 = 0;
+    int32_t mi = s->bmat[ps->body[i]];
+    for (d = 0; d < DIM; d++) {
+      v2 += ps->v[d][i] * ps->v[d][i];
+      s->e.mom[d] += ps->m[i] * ps->v[d][i];
+    }
+    if (v2 > v2max) v2max = v2;
+    ke += 0.5 * ps->m[i] * v2;
+    if (mi >= 0) se += s->mats[mi].model->energy(&s->mats[mi], ps, i);
+    am += ps->m[i] * (ps->x[0][i] * ps->v[1][i] - ps->x[1][i] * ps->v[0][i]);
+  }
+  s->e.kinetic = ke;
+  s->e.strain = se;
+  s->e.angmom = am;
+  s->vmax = sqrt(v2max);
+}
+
+double sim_total(const sim *s) {
+  return s->e.kinetic + s->e.strain + s->e.lag;
+}
+
+int constitutive(sim *s) {
+  mat_sums sum = {0, 0, 1e300, -1e300, 0};
+  int k;
+  for (k = 0; k < s->nmat; k++)
+    s->mats[k].model->update(&s->mats[k], &s->ps, s->bmat, k, s->dt, &sum);
+  s->e.strain = sum.strain;
+  s->e.lag = -0.5 * s->dt * sum.power;
+  if (sum.jmin <= sum.jmax) { s->e.jmin = sum.jmin; s->e.jmax = sum.jmax; }
+  s->e.nbadj = sum.nbadj;
+  if (sum.nbadj) {
+    snprintf(s->err, sizeof s->err,
+             "step %ld: %zu particle(s) with det F <= 0 (min %.3g): the "
+             "material was crushed; reduce the time step (cfl) or refine",
+             s->step, sum.nbadj, sum.jmin);
+    return -1;
+  }
+  return 0;
+}
+
+/* particles that left the domain are dropped (documented behaviour) */
+static void housekeeping(sim *s) {
+  particles *ps = &s->ps;
+  if (s->nout) {
+    unsigned char *keep = ps->scratch; /* cap bytes are enough */
+    size_t i;
+    for (i = 0; i < ps->n; i++) keep[i] = ps->cell[i] >= 0;
+    /* compact works array by array; keep must not be one of them */
+    s->nremoved += ps->n - particles_compact(ps, keep);
+    s->nout = 0;
+  }
+  if (s->sort_every > 0 && s->step % s->sort_every == 0) {
+    size_t ncell = 1;
+    int d;
+    for (d = 0; d < DIM; d++) ncell *= (size_t)s->g.cells[d];
+    particles_sort(ps, ps->cell, ncell);
+  }
+}
+
+static int start(sim *s) {
+  const particles *ps = &s->ps;
+  double mmin = 1e300;
+  size_t i;
+  for (i = 0; i < ps->n; i++)
+    if (ps->m[i] < mmin) mmin = ps->m[i];
+  s->mcut = ps->n ? s->mcut_rel * mmin : 0;
+  sim_measure(s);
+  s->e.initial = s->e.kinetic + s->e.strain;
+  s->e.jmin = s->e.jmax = 1;
+  s->started = 1;
+  return 0;
+}
+
+int sim_step(sim *s) {
+  int musl = s->update == UPDATE_MUSL, k, anydrv = 0;
+  if (!s->started && start(s)) return -1;
+  for (k = 0; k < s->nbody; k++) anydrv |= s->bodies[k].driven;
+  s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  grid_reset(&s->g, musl);
+  if ((s->nfield > 1 || anydrv) && p2g_mark(s)) {
+    snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
+    return -1;
+  }
+  p2g(s);
+  solve_momentum(s);
+  if (s->g.nshared) contact_normals(s);
+  if (s->gap_check) reach(s);
+  if (s->g.nshared) contact_apply(s, 0);
+  boundary_apply(s, 0);
+  solve_velocity(s);
+  g2p(s);
+  if (musl) {
+    p2g_momentum(s);
+    if (s->g.nshared) contact_apply(s, 1);
+    boundary_apply(s, 1);
+    solve_remap(s);
+    g2p_remap(s);
+  }
+  if (constitutive(s)) return -1;
+  s->t += s->dt;
+  s->step++;
+  housekeeping(s);
+  return 0;
+}

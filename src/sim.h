@@ -1,0 +1,133 @@
+/*
+** sim.h - the simulation object and the step.
+** sim_step runs the phases in the order of the method, nothing else:
+**   reset grid -> p2g (per field) -> grid momentum update -> contact ->
+**   sides and driven bodies -> grid velocities -> g2p -> [MUSL remap] ->
+**   constitutive update -> particle housekeeping.
+** Lua, callbacks and output run only between steps.
+*/
+#ifndef mvmpm_sim_h
+#define mvmpm_sim_h
+
+#include <stddef.h>
+#include <stdint.h>
+#include "dim.h"
+#include "grid.h"
+#include "material.h"
+#include "particles.h"
+
+enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
+enum update_kind { UPDATE_USL, UPDATE_MUSL };
+#define NSIDES (2 * DIM)
+/* side index: 2 d for the low side of dimension d, 2 d + 1 for the high */
+
+typedef struct side {
+  int kind;
+  double mu;         /* Coulomb friction; INFINITY sticks */
+  double v[DIM];     /* wall velocity (tangential part moves the wall) */
+  double *ext;       /* reach of material toward the wall per wall node */
+  size_t next;
+} side;
+
+typedef struct body {
+  char name[32];
+  int32_t material;  /* index into mats; -1 for a driven (rigid) body */
+  int32_t field;     /* velocity field */
+  int driven;
+  double vdrive[DIM];
+} body;
+
+typedef struct pairlaw { int32_t a, b; double mu; } pairlaw;
+
+/* energy and momentum, updated every step */
+typedef struct sim_energy {
+  double kinetic, strain;
+  double lag;        /* -dt/2 sum V sigma:D: see sim_total */
+  double friction;   /* work dissipated by friction (walls + contacts) */
+  double boundary;   /* work done on the material by walls / driven bodies */
+  double initial;    /* kinetic + strain before the first step */
+  double mom[DIM];
+  double angmom;     /* about the origin (2-D: z component) */
+  double jmin, jmax;
+  size_t nbadj;
+} sim_energy;
+
+typedef struct sim {
+  grid g;
+  particles ps;
+  int shape;         /* enum shape_kind */
+  int update;        /* enum update_kind */
+  double flip;       /* FLIP fraction of the velocity update, 0 = PIC */
+  double cfl;        /* Courant number for the automatic step */
+  double dt_fixed;   /* > 0: fixed step */
+  double dt, t, t_end;
+  long step;
+  double gravity[DIM];
+  side sides[NSIDES];
+  material *mats;
+  int nmat, matcap;
+  body *bodies;
+  int nbody, bodycap;
+  int32_t *bmat;     /* per body: material index, -1 for driven */
+  int nfield;
+  int32_t *fdriven;  /* per field: driving body or -1 */
+  double mu_default; /* default contact friction between fields */
+  pairlaw *laws;     /* overrides per field pair, sorted (a < b) */
+  int nlaw, lawcap;
+  unsigned char *flaw; /* per field: 1 if some override names it */
+  int gap_check;     /* contact only once material surfaces meet */
+  double mcut;       /* nodal masses below this are empty */
+  int sort_every;    /* steps between sorts by cell */
+  size_t nremoved;   /* particles that left the domain */
+  double lp;         /* particle half size in cells (1 / (2 ppc)) */
+  int ppc;
+  sim_energy e;
+  double vmax;       /* fastest particle of the last step */
+  size_t nout;       /* particles outside the domain after the last move */
+  double mcut_rel;   /* mcut as a fraction of the lightest particle */
+  int started;
+  char err[256];
+} sim;
+
+/* defaults: linear, MUSL, flip 1.0, cfl 0.4; 0 or -1 */
+int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
+             const int periodic[DIM], int shape, int ppc);
+void sim_free(sim *s);
+/* materials and bodies; index or -1 with s->err set */
+int sim_add_material(sim *s, const material *m);
+int sim_add_body(sim *s, const char *name, int32_t mat, int32_t field);
+/* a contact law between two fields (a != b), mu may be INFINITY */
+int sim_set_law(sim *s, int32_t a, int32_t b, double mu);
+double sim_law(const sim *s, int32_t a, int32_t b);
+/* append a particle of body b at x with volume vol; index or -1 */
+long sim_add_particle(sim *s, int32_t b, const double x[DIM],
+                      const double v[DIM], double vol);
+/* one explicit step; 0, or -1 with s->err (e.g. det F <= 0) */
+int sim_step(sim *s);
+/* the step the CFL rule gives now */
+double sim_stable_dt(const sim *s);
+/* total energy, kinetic + strain + lag.  Velocities and stresses are a
+** half step apart in the explicit update (as in symplectic Euler), so
+** kinetic + strain oscillates by O(omega dt) even when nothing is lost;
+** the lag term -dt/2 sum V sigma:D removes that first-order error (it
+** is exact for a linear oscillator) */
+double sim_total(const sim *s);
+/* recompute kinetic energy, momenta and strain energy from particles */
+void sim_measure(sim *s);
+
+/* phases (one file each) */
+int p2g_mark(sim *s);          /* p2g.c: which nodes are shared */
+void p2g(sim *s);              /* p2g.c: mass, momentum, force */
+void p2g_momentum(sim *s);     /* p2g.c: MUSL remap of momentum */
+void solve_momentum(sim *s);   /* solve.c: q = p + dt f */
+void solve_velocity(sim *s);   /* solve.c: q -> vL, f -> dv */
+void solve_remap(sim *s);      /* solve.c: p -> remapped velocity */
+void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
+void reach(sim *s);            /* reach.c: surfaces, for the gap check */
+void contact_apply(sim *s, int remap);  /* contact.c: on q, or on p (remap) */
+void boundary_apply(sim *s, int remap); /* boundary.c: sides, drives */
+void g2p(sim *s);              /* g2p.c: velocities, positions, grad v */
+void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */
+int constitutive(sim *s);      /* sim.c: each material's update */
+
+#endif

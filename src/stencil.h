@@ -1,0 +1,78 @@
+/*
+** stencil.h - the nodes a particle touches, with weights and gradients.
+** Inline so that each phase's loop, compiled for one shape kind at a
+** time (kind is a constant there), folds the shape function in.
+*/
+#ifndef mvmpm_stencil_h
+#define mvmpm_stencil_h
+
+#include "grid.h"
+#include "shape.h"
+
+#if DIM == 2
+#define STENCIL_MAX (SHAPE_MAXW * SHAPE_MAXW)
+#else
+#define STENCIL_MAX (SHAPE_MAXW * SHAPE_MAXW * SHAPE_MAXW)
+#endif
+
+typedef struct stencil {
+  int n;
+  int32_t node[STENCIL_MAX];
+  double w[STENCIL_MAX];
+  double dw[DIM][STENCIL_MAX]; /* physical gradient */
+} stencil;
+
+#define STENCIL_INLINE static inline __attribute__((always_inline))
+
+/* 1-D part: node indices (wrapped) and weights along d */
+STENCIL_INLINE int stencil_1d(const grid *g, int kind, int d, double x,
+                              double lp, int32_t *idx, double *w,
+                              double *dw) {
+  int nw = shape_width(kind), k;
+  double xi = (x - g->lo[d]) * g->inv_h + (g->periodic[d] ? 0 : g->pad);
+  int i0 = shape_eval(kind, xi, lp, w, dw);
+  for (k = 0; k < nw; k++) {
+    idx[k] = grid_wrap(g, d, i0 + k);
+    dw[k] *= g->inv_h;
+  }
+  return nw;
+}
+
+STENCIL_INLINE void stencil_eval(const grid *g, int kind, const double *x,
+                                 double lp, stencil *st) {
+  int32_t ix[SHAPE_MAXW], iy[SHAPE_MAXW];
+  double wx[SHAPE_MAXW], wy[SHAPE_MAXW], dx[SHAPE_MAXW], dy[SHAPE_MAXW];
+  int nw = stencil_1d(g, kind, 0, x[0], lp, ix, wx, dx), a, b, k = 0;
+  stencil_1d(g, kind, 1, x[1], lp, iy, wy, dy);
+#if DIM == 2
+  for (b = 0; b < nw; b++)
+    for (a = 0; a < nw; a++, k++) {
+      st->node[k] = ix[a] + g->n[0] * iy[b];
+      st->w[k] = wx[a] * wy[b];
+      st->dw[0][k] = dx[a] * wy[b];
+      st->dw[1][k] = wx[a] * dy[b];
+    }
+#else
+#error "stencil_eval: 3-D not written yet"
+#endif
+  st->n = k;
+}
+
+/* node indices only (for marking shared nodes) */
+STENCIL_INLINE int stencil_nodes(const grid *g, int kind, const double *x,
+                                 int32_t *node) {
+  int nw = shape_width(kind), a, b, k = 0, d;
+  int32_t idx[DIM][SHAPE_MAXW];
+  for (d = 0; d < DIM; d++) {
+    double xi = (x[d] - g->lo[d]) * g->inv_h + (g->periodic[d] ? 0 : g->pad);
+    int i0 = kind == SHAPE_LINEAR  ? (int)floor(xi)
+             : kind == SHAPE_GIMP  ? (int)floor(xi + 0.5) - 1
+                                   : (int)floor(xi - 0.5);
+    for (a = 0; a < nw; a++) idx[d][a] = grid_wrap(g, d, i0 + a);
+  }
+  for (b = 0; b < nw; b++)
+    for (a = 0; a < nw; a++) node[k++] = idx[0][a] + g->n[0] * idx[1][b];
+  return k;
+}
+
+#endif

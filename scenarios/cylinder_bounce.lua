@@ -13,7 +13,7 @@ local P = mvmpm.params {
   ppc = 2,             -- particles per cell per direction
   t_end = 32,          -- three impacts
   flip = 1.0,          -- FLIP fraction (0 = PIC)
-  cfl = 0.4,
+  cfl = 0.25,
   update = "musl",
   shape = "linear",
   separation = true,   -- contact only once surfaces meet

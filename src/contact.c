@@ -2,9 +2,11 @@
 ** contact.c - multi-velocity-field contact at shared nodes.
 **
 ** Normals.  With g_r = sum_p m_p grad S_ip over the particles of field r
-** and G = sum_r g_r, the outward unit normal of body r is
-**   n_r = -(2 g_r - G) / |2 g_r - G|
-** With two fields this is -(g_A - g_B)/|.|, so n_B = -n_A exactly: both
+** (grad S_ip, taken at the particle, points from the particle toward the
+** node, so g_r is minus the gradient of r's nodal mass: outward) and
+** G = sum_r g_r, the outward unit normal of body r is
+**   n_r = (2 g_r - G) / |2 g_r - G|
+** With two fields this is (g_A - g_B)/|.|, so n_B = -n_A exactly: both
 ** sides see one interface.
 **
 ** The rule (after the grid momentum update, on q = p + dt f):
@@ -39,7 +41,7 @@ void contact_normals(sim *s) {
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       double v[DIM], len = 0;
       for (d = 0; d < DIM; d++) {
-        v[d] = G[d] - 2.0 * g->sg[d][sl];
+        v[d] = 2.0 * g->sg[d][sl] - G[d];
         len += v[d] * v[d];
       }
       len = sqrt(len);

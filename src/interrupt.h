@@ -11,9 +11,13 @@
 
 extern volatile sig_atomic_t interrupt_flag;
 
-/* install the SIGINT handler; L (may be NULL) gets the stop hook */
+/* install the SIGINT handler; L (may be NULL) gets the stop hook, which
+** raises "interrupted!" at the next Lua instruction (C functions are left
+** to poll).  The handler is one-shot: a second Ctrl-C before the first
+** is honoured kills the program (the way out of C code that never polls) */
 void interrupt_install(lua_State *L);
-/* restore the default action (a second Ctrl-C then kills) */
+/* restore the default action (a second Ctrl-C then kills) and disarm
+** the stop hook if it never fired; the flag is left for the caller */
 void interrupt_uninstall(void);
 static inline int interrupt_pending(void) { return interrupt_flag != 0; }
 static inline void interrupt_clear(void) { interrupt_flag = 0; }

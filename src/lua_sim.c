@@ -200,7 +200,7 @@ int lsim_new(lua_State *L) {
     s->update = chk_option(L, 1, what, "update", UPDATE_MUSL, updates);
     chk_option(L, 1, what, "transfer", 0, transfers);
     s->flip = chk_num(L, 1, what, "flip", 1.0, 0, 1, 0);
-    s->cfl = chk_num(L, 1, what, "cfl", 0.4, 0, 1, CHK_OPENLO);
+    s->cfl = chk_num(L, 1, what, "cfl", 0.25, 0, 1, CHK_OPENLO);
     s->dt_fixed = chk_num(L, 1, what, "dt", 0, 0, HUGE_VAL, 0);
     s->t_end = chk_num(L, 1, what, "t_end", 1.0, 0, HUGE_VAL, 0);
     chk_vec(L, 1, what, "gravity", s->gravity, DIM, 0);
@@ -460,7 +460,7 @@ static int lnewindex(lua_State *L) {
   lua_setfield(L, -2, k);
   chk_keys(L, 4, "sim", keys);
   if (strcmp(k, "flip") == 0) s->flip = chk_num(L, 4, "sim", k, 1, 0, 1, 0);
-  else if (strcmp(k, "cfl") == 0) s->cfl = chk_num(L, 4, "sim", k, 0.4, 0, 1, CHK_OPENLO);
+  else if (strcmp(k, "cfl") == 0) s->cfl = chk_num(L, 4, "sim", k, 0.25, 0, 1, CHK_OPENLO);
   else if (strcmp(k, "dt") == 0) s->dt_fixed = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
   else if (strcmp(k, "t_end") == 0) s->t_end = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
   else if (strcmp(k, "friction") == 0) s->mu_default = friction(L, 4, "sim");

@@ -128,7 +128,10 @@ static int getkey(FILE *f) {
     mbstate_t st;
     wchar_t wc;
     size_t r;
-    ssize_t got = read(fd, b + n, 1);
+    ssize_t got;
+    if (interrupt_pending())
+      return EOF;  /* Ctrl-C came just before the read */
+    got = read(fd, b + n, 1);
     if (got < 0 && errno == EINTR && !interrupt_pending())
       continue;  /* window resized, job resumed */
     if (got <= 0)
@@ -367,6 +370,8 @@ static void evaluate(lua_State *L) {
   if (status == LUA_OK)
     status = show(L, base);
   interrupt_uninstall();
+  if (interrupt_pending() && tty)
+    fputs("\n", stdout);  /* past the "^C" the terminal echoed */
   interrupt_clear();
   report(L, status);
   lua_settop(L, base);

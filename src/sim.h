@@ -89,7 +89,7 @@ typedef struct sim {
   char err[256];
 } sim;
 
-/* defaults: linear, MUSL, flip 1.0, cfl 0.4; 0 or -1 */
+/* defaults: MUSL, flip 1.0, cfl 0.25; 0 or -1 */
 int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
              const int periodic[DIM], int shape, int ppc);
 void sim_free(sim *s);

@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# tests/run.sh BIN UNITDIR - every C unit test, then the Lua verification
+# cases; the last line adds them all up: "N passed, M failed".
+set -u
+bin=$1 unitdir=$2
+pass=0 fail=0
+count() { # add the "N passed, M failed" line of a log
+  local line
+  line=$(grep -E '[0-9]+ passed, [0-9]+ failed' "$1" | tail -1)
+  if [ -z "$line" ]; then fail=$((fail + 1)); return; fi
+  pass=$((pass + $(grep -oE '[0-9]+ passed' <<<"$line" | grep -oE '[0-9]+')))
+  fail=$((fail + $(grep -oE '[0-9]+ failed' <<<"$line" | grep -oE '[0-9]+')))
+}
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+for t in "$unitdir"/test_*; do
+  [ -x "$t" ] || continue
+  "$t" >"$log" 2>&1
+  rc=$?
+  grep -E '^(FAIL|ok )' "$log" | grep FAIL
+  tail -1 "$log"
+  count "$log"
+  [ $rc -eq 0 ] || grep -q 'failed' "$log" || fail=$((fail + 1))
+done
+"./$bin" test tests/verify/*.lua 2>&1 | tee "$log"
+count "$log"
+echo
+echo "$pass passed, $fail failed"
+[ "$fail" -eq 0 ]

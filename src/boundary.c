@@ -19,8 +19,7 @@
 
 /* one node (or slot) of mass m against side k; returns the impulse */
 static void wall_node(sim *s, const side *sd, int d, double sign, double m,
-                      double *const mom[DIM], size_t i, int account,
-                      double *imp) {
+                      double *const mom[DIM], size_t i, double *imp) {
   double dp[DIM], dn, tt = 0, w = 0;
   int e;
   for (e = 0; e < DIM; e++) {
@@ -38,7 +37,7 @@ static void wall_node(sim *s, const side *sd, int d, double sign, double m,
     if (tt > sd->mu * dn) imp[e] = -sd->mu * dn * dp[e] / tt;
     else imp[e] = -dp[e];
   }
-  if (account) {
+  {
     double t2 = tt > sd->mu * dn ? tt - sd->mu * dn : 0;
     s->e.friction += (tt * tt - t2 * t2) / (2 * m);
   }
@@ -46,16 +45,15 @@ static void wall_node(sim *s, const side *sd, int d, double sign, double m,
     mom[e][i] += imp[e];
     w += imp[e] * sd->v[e];
   }
-  if (account) s->e.boundary += w;
+  s->e.boundary += w;
 }
 
-static void wall_line(sim *s, int k, int line, int remap) {
+static void wall_line(sim *s, int k, int line) {
   grid *g = &s->g;
   side *sd = &s->sides[k];
   int d = k / 2, o = 1 - d, j;
   double sign = (k & 1) ? 1.0 : -1.0;
-  double *const *mom = remap ? g->p : g->q;
-  double *const *smom = remap ? g->sp : g->sq;
+  double *const *mom = g->q, *const *smom = g->sq;
   for (j = 0; j < g->n[o]; j++) {
     int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;
     double imp[DIM];
@@ -63,20 +61,20 @@ static void wall_line(sim *s, int k, int line, int remap) {
     if (g->m[n] <= s->mcut) continue;
     if (s->gap_check && sd->ext[j] < 0) continue;
     if (g->head[n] < 0) {
-      wall_node(s, sd, d, sign, g->m[n], mom, (size_t)n, !remap, imp);
+      wall_node(s, sd, d, sign, g->m[n], mom, (size_t)n, imp);
       continue;
     }
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       if (g->sm[sl] <= s->mcut) continue;
-      wall_node(s, sd, d, sign, g->sm[sl], smom, (size_t)sl, !remap, imp);
+      wall_node(s, sd, d, sign, g->sm[sl], smom, (size_t)sl, imp);
       for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
     }
   }
 }
 
-static void driven(sim *s, int remap) {
+static void driven(sim *s) {
   grid *g = &s->g;
-  double *const *mom = remap ? g->p : g->q;
+  double *const *mom = g->q;
   double w = 0;
   size_t n;
   int d;
@@ -89,20 +87,19 @@ static void driven(sim *s, int remap) {
       w += c * s->bodies[b].vdrive[d];
     }
   }
-  if (!remap) s->e.boundary += w;
+  s->e.boundary += w;
 }
 
-void boundary_apply(sim *s, int remap) {
+void boundary_apply(sim *s) {
   grid *g = &s->g;
-  int k, any = 0;
-  for (k = 0; k < s->nbody; k++) any |= s->bodies[k].driven;
-  if (any) driven(s, remap);
+  int k;
+  if (s->ndriven) driven(s);
   for (k = 0; k < NSIDES; k++) {
     int d = k / 2, line, first, last;
     if (s->sides[k].kind != SIDE_WALL) continue;
     /* the wall line and the ghost nodes beyond it */
     if (k & 1) { first = g->pad + g->cells[d]; last = g->n[d] - 1; }
     else { first = 0; last = g->pad; }
-    for (line = first; line <= last; line++) wall_line(s, k, line, remap);
+    for (line = first; line <= last; line++) wall_line(s, k, line);
   }
 }

@@ -51,7 +51,7 @@ void contact_normals(sim *s) {
 }
 
 static void node(sim *s, int32_t n, double *const mom[DIM],
-                 double *const smom[DIM], int account) {
+                 double *const smom[DIM]) {
   grid *g = &s->g;
   double c[MAXSLOTS][DIM], csum[DIM] = {0}, vref[DIM], M = g->m[n];
   int32_t sl, slots[MAXSLOTS], drv = -1;
@@ -98,10 +98,10 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
     if (tt > mu * dn) { /* slides: friction mu dn against the slip */
       double r = mu * dn / tt;
       for (d = 0; d < DIM; d++) c[k][d] -= r * t[d];
-      if (account) s->e.friction += (tt * tt - (tt - mu * dn) * (tt - mu * dn)) / (2 * mr);
+      s->e.friction += (tt * tt - (tt - mu * dn) * (tt - mu * dn)) / (2 * mr);
     } else { /* sticks */
       for (d = 0; d < DIM; d++) c[k][d] -= t[d];
-      if (account) s->e.friction += tt * tt / (2 * mr);
+      s->e.friction += tt * tt / (2 * mr);
     }
     for (d = 0; d < DIM; d++) csum[d] += c[k][d];
   }
@@ -113,7 +113,7 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
       mom[d][n] += cd[d];
       w += (cd[d] + csum[d]) * vref[d];
     }
-    if (account) s->e.boundary += w;
+    s->e.boundary += w;
     for (k = 0; k < ns; k++)
       for (d = 0; d < DIM; d++) {
         smom[d][slots[k]] += c[k][d];
@@ -128,10 +128,8 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
   }
 }
 
-void contact_apply(sim *s, int remap) {
+void contact_apply(sim *s) {
   grid *g = &s->g;
-  double *const *mom = remap ? g->p : g->q;
-  double *const *smom = remap ? g->sp : g->sq;
   size_t k;
-  for (k = 0; k < g->nshared; k++) node(s, g->shared[k], mom, smom, !remap);
+  for (k = 0; k < g->nshared; k++) node(s, g->shared[k], g->q, g->sq);
 }

@@ -200,6 +200,7 @@ static void drive_spec(lua_State *L, lsim *ls, int simidx, int b) {
   lua_getfield(L, 2, "driven");
   if (lua_isnil(L, -1)) { lua_pop(L, 1); return; }
   bd->driven = 1;
+  ls->s.ndriven++;
   ls->s.bmat[b] = -1;
   if (ls->s.fdriven[bd->field] >= 0)
     luaL_error(L, "body: two driven bodies cannot share a velocity field");

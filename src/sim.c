@@ -253,12 +253,11 @@ static int start(sim *s) {
 }
 
 int sim_step(sim *s) {
-  int musl = s->update == UPDATE_MUSL, k, anydrv = 0;
+  int musl = s->update == UPDATE_MUSL;
   if (!s->started && start(s)) return -1;
-  for (k = 0; k < s->nbody; k++) anydrv |= s->bodies[k].driven;
   s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
   grid_reset(&s->g, musl);
-  if ((s->nfield > 1 || anydrv) && p2g_mark(s)) {
+  if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
   }
@@ -266,8 +265,8 @@ int sim_step(sim *s) {
   solve_momentum(s);
   if (s->g.nshared) contact_normals(s);
   if (s->gap_check) reach(s);
-  if (s->g.nshared) contact_apply(s, 0);
-  boundary_apply(s, 0);
+  if (s->g.nshared) contact_apply(s);
+  boundary_apply(s);
   solve_velocity(s);
   g2p(s);
   if (musl) {

@@ -70,6 +70,7 @@ typedef struct sim {
   int nbody, bodycap;
   int32_t *bmat;     /* per body: material index, -1 for driven */
   int nfield;
+  int ndriven;       /* driven bodies (set with their drive) */
   int32_t *fdriven;  /* per field: driving body or -1 */
   double mu_default; /* default contact friction between fields */
   pairlaw *laws;     /* overrides per field pair, sorted (a < b) */
@@ -124,8 +125,8 @@ void solve_velocity(sim *s);   /* solve.c: q -> vL, f -> dv */
 void solve_remap(sim *s);      /* solve.c: p -> remapped velocity */
 void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
-void contact_apply(sim *s, int remap);  /* contact.c: on q, or on p (remap) */
-void boundary_apply(sim *s, int remap); /* boundary.c: sides, drives */
+void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
+void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void g2p(sim *s);              /* g2p.c: velocities, positions, grad v */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */
 int constitutive(sim *s);      /* sim.c: each material's update */

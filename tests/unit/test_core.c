@@ -104,7 +104,7 @@ static void transfer(void) {
     }
     UNIT_NEAR(worst, 0, 1e-12, "straight interface: |n_x| = 1 at shared nodes");
     UNIT_NEAR(nsum, 0, 1e-12, "normals of the two sides sum to zero");
-    contact_apply(&s, 0);
+    contact_apply(&s);
     for (k = 0; k < s.g.nshared; k++) {
       int32_t sl;
       for (sl = s.g.head[s.g.shared[k]]; sl >= 0; sl = s.g.snext[sl]) {
@@ -137,7 +137,7 @@ static void coulomb(void) {
     s.g.m[n] = 2.0;
     s.g.q[0][n] = -0.2; /* into the wall: dn = 0.2 */
     s.g.q[1][n] = 0.1;  /* tangential */
-    boundary_apply(&s, 0);
+    boundary_apply(&s);
     UNIT_NEAR(s.g.q[0][n], 0, 1e-15, "wall: normal momentum removed");
     if (c == 0) {
       UNIT_NEAR(s.g.q[1][n], 0.1 - 0.1 * 0.2, 1e-15, "wall: slides, t reduced by mu dn");

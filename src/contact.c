@@ -50,12 +50,60 @@ void contact_normals(sim *s) {
   }
 }
 
+/* normal traction n.sigma.n of slot sl (tension positive) */
+static double traction(const grid *g, int32_t sl) {
+  double nx = g->sn[0][sl], ny = g->sn[1][sl];
+#if DIM == 2
+  return nx * nx * g->ss[0][sl] + ny * ny * g->ss[1][sl] +
+         2 * nx * ny * g->ss[2][sl];
+#else
+#error "contact traction: 3-D not written yet"
+#endif
+}
+
+/*
+** Bonds (the report's rule).  Where field r and its partner o both carry
+** bond strength and their law lets them bond, the interface is bonded
+** while the normal traction t (mass-weighted over the two sides) stays
+** at or below the strength b = min(b_r, b_o, the law's cap): then r moves
+** with the
+** reference velocity (perfect bonding, as on one field).  When t > b the
+** node's strength on both sides is cut to zero, the cut recorded for
+** bond_scatter, and the interface is treated as debonded contact from
+** this step on.  Returns 1 if bonded.
+*/
+static int bonded(sim *s, int32_t sl, int32_t o, int odriven) {
+  grid *g = &s->g;
+  const pairlaw *l;
+  double b, t, cap;
+  if (!(g->sb[sl] > 0) || !(g->sb[o] > 0 || odriven)) return 0;
+  l = sim_law_of(s, g->sfield[sl], g->sfield[o]);
+  cap = l ? l->bond : s->bond_default;
+  if (!(cap > 0)) return 0;
+  if (odriven) { b = g->sb[sl]; t = traction(g, sl); }
+  else {
+    b = g->sb[sl] < g->sb[o] ? g->sb[sl] : g->sb[o];
+    t = (g->sm[sl] * traction(g, sl) + g->sm[o] * traction(g, o)) /
+        (g->sm[sl] + g->sm[o]);
+  }
+  if (cap < b) b = cap;
+  if (t <= b) return 1;
+  g->scut[sl] += g->sb[sl];
+  g->sb[sl] = 0;
+  if (!odriven) {
+    g->scut[o] += g->sb[o];
+    g->sb[o] = 0;
+  }
+  s->ncut++;
+  return 0;
+}
+
 static void node(sim *s, int32_t n, double *const mom[DIM],
                  double *const smom[DIM]) {
   grid *g = &s->g;
   double c[MAXSLOTS][DIM], csum[DIM] = {0}, vref[DIM], M = g->m[n];
   int32_t sl, slots[MAXSLOTS], drv = -1;
-  int ns = 0, k, d;
+  int ns = 0, k, d, bonds = s->fbond >= 0;
   if (M <= s->mcut) return;
   for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl]) {
     slots[ns++] = sl;
@@ -68,7 +116,7 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
     for (d = 0; d < DIM; d++) vref[d] = mom[d][n] / M;
   for (k = 0; k < ns; k++) {
     double dp[DIM], t[DIM], dn = 0, tt = 0, mr, mu, other = -1e300, mo = -1;
-    int32_t of = -1;
+    int32_t o = -1;
     int j;
     sl = slots[k];
     mr = g->sm[sl];
@@ -78,17 +126,28 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
       dp[d] = smom[d][sl] - mr * vref[d];
       dn += dp[d] * g->sn[d][sl];
     }
-    if (!(dn > 0)) continue;
-    /* the partner: the heaviest other field here; its reach for the gap */
+    /* the partner: the driven body, else the heaviest other field here;
+    ** the largest reach of the others, for the separation check */
     for (j = 0; j < ns; j++) {
-      int32_t o = slots[j];
-      if (o == sl) continue;
-      if (g->sext[o] > other) other = g->sext[o];
-      if (g->sm[o] > mo) { mo = g->sm[o]; of = g->sfield[o]; }
+      int32_t q = slots[j];
+      if (q == sl) continue;
+      if (g->sext[q] > other) other = g->sext[q];
+      if (g->sm[q] > mo) { mo = g->sm[q]; o = q; }
     }
+    if (drv >= 0) o = drv;
+    if (bonds && bonded(s, sl, o, drv >= 0)) {
+      double e = 0;
+      for (d = 0; d < DIM; d++) {
+        c[k][d] = -dp[d];
+        csum[d] += c[k][d];
+        e += dp[d] * dp[d];
+      }
+      s->e.bond += e / (2 * mr);
+      continue;
+    }
+    if (!(dn > 0)) continue;
     if (s->gap_check && g->sext[sl] + other < 0) continue;
-    mu = drv >= 0 ? sim_law(s, g->sfield[sl], g->sfield[drv])
-                  : sim_law(s, g->sfield[sl], of);
+    mu = sim_law(s, g->sfield[sl], g->sfield[o]);
     for (d = 0; d < DIM; d++) {
       t[d] = dp[d] - dn * g->sn[d][sl];
       tt += t[d] * t[d];
@@ -131,5 +190,6 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
 void contact_apply(sim *s) {
   grid *g = &s->g;
   size_t k;
+  s->ncut = 0;
   for (k = 0; k < g->nshared; k++) node(s, g->shared[k], g->q, g->sq);
 }

@@ -220,14 +220,14 @@ static void drive_spec(lua_State *L, lsim *ls, int simidx, int b) {
 int lbody_new(lua_State *L) {
   static const char *const keys[] = {"name", "shape", "points", "material",
       "velocity", "angular_velocity", "field", "driven", "volume", "overlap",
-      NULL};
+      "bond", NULL};
   static const char *const vols[] = {"cell", "exact", NULL};
   static const char *const ovl[] = {"error", "skip", NULL};
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   seed sd = {0};
   size_t *taken = NULL, ntaken = 0, k;
-  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1;
+  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond;
   int mi, b, d, exact, skip, isrest = 0, vfun;
   int32_t field;
   char name[32];
@@ -251,6 +251,7 @@ int lbody_new(lua_State *L) {
   if (!vfun) chk_vec(L, 2, "body", "velocity", v0, DIM, 0);
   omega = chk_num(L, 2, "body", "angular_velocity", 0, -HUGE_VAL, HUGE_VAL, 0);
   exact = chk_option(L, 2, "body", "volume", 0, vols);
+  bond = chk_num(L, 2, "body", "bond", 0, 0, HUGE_VAL, 0);
   skip = chk_option(L, 2, "body", "overlap", 0, ovl);
   occ_init(L, ls);
   /* seed */
@@ -320,6 +321,13 @@ int lbody_new(lua_State *L) {
   }
   free(sd.x);
   free(sd.vol);
+  if (bond > 0) { /* strength of the body's bonds to its neighbours */
+    double *bp;
+    size_t first = s->ps.n - sd.n;
+    if (sim_enable_bonds(s) < 0) luaL_error(L, "body: out of memory for bonds");
+    bp = particles_comp(&s->ps, s->fbond, 0);
+    for (k = first; k < s->ps.n; k++) bp[k] = bond;
+  }
   drive_spec(L, ls, 1, b);
   (void)isrest;
   return lbody_push(L, 1, b);

@@ -73,6 +73,16 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
   lua_pop(L, 1);
 }
 
+/* bond = true | false | strength cap (>= 0) */
+static double bondcap(lua_State *L, int idx, const char *what, double def) {
+  double b;
+  lua_getfield(L, idx, "bond");
+  if (lua_isboolean(L, -1)) b = lua_toboolean(L, -1) ? INFINITY : 0;
+  else b = chk_num(L, idx, what, "bond", def, 0, HUGE_VAL, 0);
+  lua_pop(L, 1);
+  return b;
+}
+
 static double friction(lua_State *L, int idx, const char *what) {
   double mu;
   lua_getfield(L, idx, "friction");
@@ -213,12 +223,13 @@ int lsim_new(lua_State *L) {
     lua_pop(L, 1);
     lua_getfield(L, 1, "contact");
     if (!lua_isnil(L, -1)) {
-      static const char *const ck[] = {"friction", "separation", NULL};
+      static const char *const ck[] = {"friction", "separation", "bond", NULL};
       int ci = lua_gettop(L);
       if (!lua_istable(L, ci)) luaL_error(L, "sim: field 'contact' must be a table");
       chk_keys(L, ci, "sim.contact", ck);
       s->mu_default = friction(L, ci, "sim.contact");
       s->gap_check = chk_bool(L, ci, "sim.contact", "separation", 1);
+      s->bond_default = bondcap(L, ci, "sim.contact", INFINITY);
     }
     lua_pop(L, 1);
     lua_pushvalue(L, simidx);
@@ -242,27 +253,32 @@ static int lgc(lua_State *L) {
   return 0;
 }
 
-/* sim:contact(a, b, {friction = mu}) or sim:contact{friction = mu} */
+/* sim:contact(a, b, {friction = mu, bond = true|false}) or
+** sim:contact{friction = mu, separation = true|false, bond = true|false} */
 static int lcontact(lua_State *L) {
-  static const char *const ck[] = {"friction", "separation", NULL};
+  static const char *const ck[] = {"friction", "separation", "bond", NULL};
+  static const char *const pk[] = {"friction", "bond", NULL};
   lsim *ls = lsim_check(L, 1);
   if (lua_istable(L, 2)) {
     chk_keys(L, 2, "contact", ck);
     ls->s.mu_default = friction(L, 2, "contact");
     ls->s.gap_check = chk_bool(L, 2, "contact", "separation", ls->s.gap_check);
+    ls->s.bond_default = bondcap(L, 2, "contact", ls->s.bond_default);
     return 0;
   } else {
     lbody *a = luaL_checkudata(L, 2, LBODY_MT), *b = luaL_checkudata(L, 3, LBODY_MT);
     int32_t fa = ls->s.bodies[a->idx].field, fb = ls->s.bodies[b->idx].field;
     double mu;
     luaL_checktype(L, 4, LUA_TTABLE);
-    chk_keys(L, 4, "contact", ck);
+    chk_keys(L, 4, "contact", pk);
     if (fa == fb)
       luaL_error(L, "contact: bodies '%s' and '%s' share one velocity field, so "
                     "they are bonded; give them different fields",
                  ls->s.bodies[a->idx].name, ls->s.bodies[b->idx].name);
     mu = friction(L, 4, "contact");
-    if (sim_set_law(&ls->s, fa, fb, mu)) luaL_error(L, "contact: out of memory");
+    if (sim_set_law(&ls->s, fa, fb, mu,
+                    bondcap(L, 4, "contact", ls->s.bond_default)))
+      luaL_error(L, "contact: out of memory");
     return 0;
   }
 }
@@ -356,7 +372,10 @@ static int lenergy(lua_State *L) {
   setnum(L, "boundary_work", s->e.boundary);
   setnum(L, "initial", s->e.initial);
   setnum(L, "total", sim_total(s));
-  setnum(L, "residual", s->e.initial + s->e.boundary - s->e.friction - sim_total(s));
+  setnum(L, "bond_work", s->e.bond);
+  setnum(L, "residual", sim_residual(s));
+  lua_pushinteger(L, (lua_Integer)s->ncut_total);
+  lua_setfield(L, -2, "debonded");
   setnum(L, "px", s->e.mom[0]);
   setnum(L, "py", s->e.mom[1]);
   setnum(L, "angmom", s->e.angmom);

@@ -146,14 +146,12 @@ static int cmd_run(int argc, char **argv) {
   ls = lua_touserdata(L, -1);
   if (run_close(L, ls) == 0 && !rc && !quiet) {
     sim *s = &ls->s;
-    double tot = sim_total(s);
     printf("%s: %ld steps to t = %g, %zu particles, %d bodies, %.2f s wall\n",
            scene, s->step, s->t, s->ps.n, s->nbody, now() - w0);
     printf("energy: initial %.6g  kinetic %.6g  strain %.6g  dissipated %.6g  "
            "boundary work %.6g  residual %.3g (%.3g%% of initial)\n",
-           s->e.initial, s->e.kinetic, s->e.strain, s->e.friction, s->e.boundary,
-           s->e.initial + s->e.boundary - s->e.friction - tot,
-           100 * (s->e.initial + s->e.boundary - s->e.friction - tot) /
+           s->e.initial, s->e.kinetic, s->e.strain, s->e.friction + s->e.bond,
+           s->e.boundary, sim_residual(s), 100 * sim_residual(s) /
                (s->e.initial > 0 ? s->e.initial : 1));
     if (s->nremoved) printf("%zu particles left the domain and were removed\n", s->nremoved);
     printf("output: %s/ (particles.xmf, %d snapshots, diagnostics.csv)\n",

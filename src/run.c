@@ -43,7 +43,7 @@ static int mkdirs(const char *path, char *err, size_t errlen) {
 
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "boundary_work", "total", "residual", "px", "py", "angmom",
-    "jmin", "jmax", "particles"};
+    "jmin", "jmax", "particles", "bond_work", "debonded"};
 #define NCOLS (int)(sizeof cols / sizeof cols[0])
 
 static void csv_row(lua_State *L, lsim *ls) {
@@ -53,9 +53,10 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[0] = (double)s->step; v[1] = s->t; v[2] = s->dt;
   v[3] = s->e.kinetic; v[4] = s->e.strain; v[5] = s->e.friction;
   v[6] = s->e.boundary; v[7] = tot;
-  v[8] = s->e.initial + s->e.boundary - s->e.friction - tot;
+  v[8] = sim_residual(s);
   v[9] = s->e.mom[0]; v[10] = s->e.mom[1]; v[11] = s->e.angmom;
   v[12] = s->e.jmin; v[13] = s->e.jmax; v[14] = (double)s->ps.n;
+  v[15] = s->e.bond; v[16] = (double)s->ncut_total;
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 

@@ -19,6 +19,8 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->cfl = 0.25;
   s->t_end = 1.0;
   s->gap_check = 1;
+  s->bond_default = INFINITY;
+  s->fbond = -1;
   s->mcut_rel = 1e-9;
   s->sort_every = 20;
   s->ppc = ppc;
@@ -114,12 +116,16 @@ static int lawcmp(const void *x, const void *y) {
   return (a->b > b->b) - (a->b < b->b);
 }
 
-int sim_set_law(sim *s, int32_t a, int32_t b, double mu) {
+int sim_set_law(sim *s, int32_t a, int32_t b, double mu, double bond) {
   pairlaw key;
   int k;
   if (a > b) { int32_t t = a; a = b; b = t; }
   for (k = 0; k < s->nlaw; k++)
-    if (s->laws[k].a == a && s->laws[k].b == b) { s->laws[k].mu = mu; return 0; }
+    if (s->laws[k].a == a && s->laws[k].b == b) {
+      s->laws[k].mu = mu;
+      s->laws[k].bond = bond;
+      return 0;
+    }
   if (s->nlaw == s->lawcap) {
     int cap = s->lawcap ? 2 * s->lawcap : 16;
     pairlaw *p = realloc(s->laws, cap * sizeof *p);
@@ -127,20 +133,31 @@ int sim_set_law(sim *s, int32_t a, int32_t b, double mu) {
     s->laws = p;
     s->lawcap = cap;
   }
-  key.a = a; key.b = b; key.mu = mu;
+  key.a = a; key.b = b; key.mu = mu; key.bond = bond;
   s->laws[s->nlaw++] = key;
   qsort(s->laws, s->nlaw, sizeof *s->laws, lawcmp);
   s->flaw[a] = s->flaw[b] = 1;
   return 0;
 }
 
-double sim_law(const sim *s, int32_t a, int32_t b) {
-  pairlaw key, *hit;
-  if (b < 0 || !(s->flaw[a] && s->flaw[b])) return s->mu_default;
+const pairlaw *sim_law_of(const sim *s, int32_t a, int32_t b) {
+  pairlaw key;
+  if (b < 0 || !(s->flaw[a] && s->flaw[b])) return NULL;
   if (a > b) { int32_t t = a; a = b; b = t; }
   key.a = a; key.b = b;
-  hit = bsearch(&key, s->laws, s->nlaw, sizeof *s->laws, lawcmp);
-  return hit ? hit->mu : s->mu_default;
+  return bsearch(&key, s->laws, s->nlaw, sizeof *s->laws, lawcmp);
+}
+
+double sim_law(const sim *s, int32_t a, int32_t b) {
+  const pairlaw *l = sim_law_of(s, a, b);
+  return l ? l->mu : s->mu_default;
+}
+
+int sim_enable_bonds(sim *s) {
+  if (s->fbond < 0)
+    s->fbond = particles_add_field(&s->ps, "bond", 1, PF_DOUBLE, "M/(L T^2)",
+                                   PF_OUTPUT | PF_RESTART);
+  return s->fbond;
 }
 
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],
@@ -198,6 +215,10 @@ void sim_measure(sim *s) {
 
 double sim_total(const sim *s) {
   return s->e.kinetic + s->e.strain + s->e.lag;
+}
+
+double sim_residual(const sim *s) {
+  return s->e.initial + s->e.boundary - s->e.friction - s->e.bond - sim_total(s);
 }
 
 int constitutive(sim *s) {
@@ -265,7 +286,12 @@ int sim_step(sim *s) {
   solve_momentum(s);
   if (s->g.nshared) contact_normals(s);
   if (s->gap_check) reach(s);
+  if (s->g.nshared && s->fbond >= 0) bond_gather(s);
   if (s->g.nshared) contact_apply(s);
+  if (s->ncut) {
+    bond_scatter(s);
+    s->ncut_total += s->ncut;
+  }
   boundary_apply(s);
   solve_velocity(s);
   g2p(s);

@@ -37,13 +37,18 @@ typedef struct body {
   double vdrive[DIM];
 } body;
 
-typedef struct pairlaw { int32_t a, b; double mu; } pairlaw;
+/* a contact law between two fields: friction, and the most their
+** interface's bond may hold (bond.c): 0 never bonds, INFINITY bonds up
+** to the particles' own strengths */
+typedef struct pairlaw { int32_t a, b; double mu, bond; } pairlaw;
 
 /* energy and momentum, updated every step */
 typedef struct sim_energy {
   double kinetic, strain;
   double lag;        /* -dt/2 sum V sigma:D: see sim_total */
   double friction;   /* work dissipated by friction (walls + contacts) */
+  double bond;       /* kinetic energy of relative motion removed by bonded
+                        interfaces (bond.c) */
   double boundary;   /* work done on the material by walls / driven bodies */
   double initial;    /* kinetic + strain before the first step */
   double mom[DIM];
@@ -76,6 +81,10 @@ typedef struct sim {
   pairlaw *laws;     /* overrides per field pair, sorted (a < b) */
   int nlaw, lawcap;
   unsigned char *flaw; /* per field: 1 if some override names it */
+  double bond_default; /* bond cap where no law says otherwise (INFINITY) */
+  int fbond;         /* particle field "bond" (strength), -1: no bonds */
+  size_t ncut;       /* interface slots debonded in the last step */
+  size_t ncut_total; /* ... since the start */
   int gap_check;     /* contact only once material surfaces meet */
   double mcut;       /* nodal masses below this are empty */
   int sort_every;    /* steps between sorts by cell */
@@ -97,9 +106,14 @@ void sim_free(sim *s);
 /* materials and bodies; index or -1 with s->err set */
 int sim_add_material(sim *s, const material *m);
 int sim_add_body(sim *s, const char *name, int32_t mat, int32_t field);
-/* a contact law between two fields (a != b), mu may be INFINITY */
-int sim_set_law(sim *s, int32_t a, int32_t b, double mu);
+/* a contact law between two fields (a != b), mu may be INFINITY; bond:
+** the most the interface's bond holds (0 never, INFINITY no cap) */
+int sim_set_law(sim *s, int32_t a, int32_t b, double mu, double bond);
+/* the law of two fields (b < 0: none, the default) */
+const pairlaw *sim_law_of(const sim *s, int32_t a, int32_t b);
 double sim_law(const sim *s, int32_t a, int32_t b);
+/* give the particles a bond strength field ("bond"); its index or -1 */
+int sim_enable_bonds(sim *s);
 /* append a particle of body b at x with volume vol; index or -1 */
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],
                       const double v[DIM], double vol);
@@ -113,6 +127,9 @@ double sim_stable_dt(const sim *s);
 ** the lag term -dt/2 sum V sigma:D removes that first-order error (it
 ** is exact for a linear oscillator) */
 double sim_total(const sim *s);
+/* the budget's residual: initial + boundary work - friction - bond work
+** - total; zero for a perfect accounting */
+double sim_residual(const sim *s);
 /* recompute kinetic energy, momenta and strain energy from particles */
 void sim_measure(sim *s);
 
@@ -126,6 +143,8 @@ void solve_remap(sim *s);      /* solve.c: p -> remapped velocity */
 void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
+void bond_gather(sim *s);      /* bond.c: strength, stress at shared slots */
+void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void g2p(sim *s);              /* g2p.c: velocities, positions, grad v */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */

@@ -1,0 +1,86 @@
+/*
+** bond.c - interfacial bond strength between the grid and the particles.
+**
+** Each particle of a bonding body carries a bond strength b_p (field
+** "bond", a stress).  Before contact, every shared slot of field r gets
+** the mass-weighted strength and stress of r's particles around it,
+**   b_r = sum_p S_ip m_p b_p / m_r,   sigma_r = sum_p S_ip m_p sigma_p / m_r
+** (contact.c compares n.sigma_r.n with the smaller strength of the two
+** sides).  Where contact cut a node's strength (the normal traction
+** exceeded it), the cut c_i is interpolated back and taken from the
+** particles, never below zero:
+**   b_p <- max(0, b_p - sum_i S_ip c_i)
+** so a particle whose interface nodes have all debonded has no strength
+** left, damage shows on the particles, and it cannot heal.
+**
+** Removing the whole nodal strength at once is deliberate: a strength
+** criterion without a softening law has no length or energy scale by
+** which to spread the loss over steps; cutting it at once makes the
+** interface let go where it is overloaded, and the debond front then
+** moves as fast as the elastic waves carry the load to the next node.
+** Only particles beside shared nodes are visited.
+*/
+#include "sim.h"
+#include "stencil.h"
+
+void bond_gather(sim *s) {
+  grid *g = &s->g;
+  const particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  const double *bp = particles_comp(ps, s->fbond, 0);
+  stencil st;
+  size_t i, k;
+  int c;
+  for (i = 0; i < ps->n; i++) {
+    double x[DIM], mp = ps->m[i], sig[GRID_NSIG];
+    int32_t node[STENCIL_MAX], f = bd[ps->body[i]].field;
+    int nn, d, any = 0;
+    for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
+    nn = stencil_nodes(g, s->shape, x, node);
+    for (k = 0; k < (size_t)nn && !any; k++) any = g->head[node[k]] >= 0;
+    if (!any) continue;
+    stencil_eval(g, s->shape, x, s->lp, &st);
+#if DIM == 2
+    sig[0] = ps->s[S_XX][i];
+    sig[1] = ps->s[S_YY][i];
+    sig[2] = ps->s[S_XY][i];
+#endif
+    for (k = 0; k < (size_t)st.n; k++) {
+      int32_t n = st.node[k], sl;
+      double wm = st.w[k] * mp;
+      if (g->head[n] < 0) continue;
+      sl = grid_slot(g, n, f);
+      g->sb[sl] += wm * bp[i];
+      for (c = 0; c < GRID_NSIG; c++) g->ss[c][sl] += wm * sig[c];
+    }
+  }
+  for (k = 0; k < g->nslot; k++) {
+    double inv = g->sm[k] > 0 ? 1.0 / g->sm[k] : 0.0;
+    g->sb[k] *= inv;
+    for (c = 0; c < GRID_NSIG; c++) g->ss[c][k] *= inv;
+  }
+}
+
+void bond_scatter(sim *s) {
+  const grid *g = &s->g;
+  particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  double *bp = particles_comp(ps, s->fbond, 0);
+  stencil st;
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    double x[DIM], cut = 0;
+    int32_t f = bd[ps->body[i]].field;
+    int k, d;
+    if (!(bp[i] > 0)) continue;
+    /* called before g2p: the particles sit where they were gathered */
+    for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
+    stencil_eval(g, s->shape, x, s->lp, &st);
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      if (g->head[n] < 0) continue;
+      cut += st.w[k] * g->scut[grid_slot(g, n, f)];
+    }
+    if (cut > 0) bp[i] = bp[i] > cut ? bp[i] - cut : 0.0;
+  }
+}

@@ -6,12 +6,17 @@
 ** the mass-weighted strength and stress of r's particles around it,
 **   b_r = sum_p S_ip m_p b_p / m_r,   sigma_r = sum_p S_ip m_p sigma_p / m_r
 ** (contact.c compares n.sigma_r.n with the smaller strength of the two
-** sides).  Where contact cut a node's strength (the normal traction
-** exceeded it), the cut c_i is interpolated back and taken from the
-** particles, never below zero:
-**   b_p <- max(0, b_p - sum_i S_ip c_i)
+** sides).  Where contact cut a node's strength to zero (the normal
+** traction exceeded it), the cut is interpolated back to the particles
+** over the interface nodes they touch:
+**   b_p <- b_p (1 - sum_{i cut} S_ip / sum_{i shared} S_ip)
 ** so a particle whose interface nodes have all debonded has no strength
-** left, damage shows on the particles, and it cannot heal.
+** left, damage shows on the particles, and no node it reaches can bond
+** again.  (Interpolating the nodal value itself, b_p -= sum S_ip b_i,
+** would leave a particle with a small weight on the interface most of
+** its strength, the next step's nodal strength would be positive again,
+** and an interface that has let go could bond again as soon as its
+** traction fell: healing and chatter.)
 **
 ** Removing the whole nodal strength at once is deliberate: a strength
 ** criterion without a softening law has no length or energy scale by
@@ -69,7 +74,7 @@ void bond_scatter(sim *s) {
   stencil st;
   size_t i;
   for (i = 0; i < ps->n; i++) {
-    double x[DIM], cut = 0;
+    double x[DIM], wsh = 0, wcut = 0;
     int32_t f = bd[ps->body[i]].field;
     int k, d;
     if (!(bp[i] > 0)) continue;
@@ -79,8 +84,9 @@ void bond_scatter(sim *s) {
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       if (g->head[n] < 0) continue;
-      cut += st.w[k] * g->scut[grid_slot(g, n, f)];
+      wsh += st.w[k];
+      if (g->scut[grid_slot(g, n, f)] > 0) wcut += st.w[k];
     }
-    if (cut > 0) bp[i] = bp[i] > cut ? bp[i] - cut : 0.0;
+    if (wcut > 0) bp[i] = wcut >= wsh ? 0.0 : bp[i] * (1.0 - wcut / wsh);
   }
 }

@@ -372,7 +372,6 @@ static int lenergy(lua_State *L) {
   setnum(L, "boundary_work", s->e.boundary);
   setnum(L, "initial", s->e.initial);
   setnum(L, "total", sim_total(s));
-  setnum(L, "bond_work", s->e.bond);
   setnum(L, "residual", sim_residual(s));
   lua_pushinteger(L, (lua_Integer)s->ncut_total);
   lua_setfield(L, -2, "debonded");

@@ -150,7 +150,7 @@ static int cmd_run(int argc, char **argv) {
            scene, s->step, s->t, s->ps.n, s->nbody, now() - w0);
     printf("energy: initial %.6g  kinetic %.6g  strain %.6g  dissipated %.6g  "
            "boundary work %.6g  residual %.3g (%.3g%% of initial)\n",
-           s->e.initial, s->e.kinetic, s->e.strain, s->e.friction + s->e.bond,
+           s->e.initial, s->e.kinetic, s->e.strain, s->e.friction,
            s->e.boundary, sim_residual(s), 100 * sim_residual(s) /
                (s->e.initial > 0 ? s->e.initial : 1));
     if (s->nremoved) printf("%zu particles left the domain and were removed\n", s->nremoved);

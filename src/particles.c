@@ -64,6 +64,8 @@ void particles_init(particles *ps) {
   add(ps, "halfsize", 1, PF_DOUBLE, "cells", PF_RESTART, s, NULL);
   s[0] = (void **)&ps->cell;
   add(ps, "cell", 1, PF_INT32, "", 0, s, NULL);
+  s[0] = (void **)&ps->id;
+  add(ps, "id", 1, PF_INT32, "", PF_OUTPUT | PF_RESTART, s, NULL);
 }
 
 void particles_free(particles *ps) {
@@ -122,6 +124,7 @@ size_t particles_push(particles *ps) {
     for (c = 0; c < ps->fields[f].ncomp; c++)
       memset((char *)*ps->fields[f].slot[c] + i * 8, 0, 8);
   for (d = 0; d < DIM; d++) ps->F[d * DIM + d][i] = 1.0;
+  ps->id[i] = (int32_t)(++ps->nmade);
   ps->n++;
   return i;
 }

@@ -36,6 +36,7 @@ typedef struct pfield {
 */
 typedef struct particles {
   size_t n, cap;
+  size_t nmade;        /* particles ever made (the next id) */
   double *x[DIM];      /* position */
   double *v[DIM];      /* velocity */
   double *m;           /* mass */
@@ -46,6 +47,8 @@ typedef struct particles {
   double *lp;          /* half particle size in cell units (GIMP) */
   int32_t *body;       /* body index */
   int32_t *cell;       /* cell index of the last sort */
+  int32_t *id;         /* creation order, 1-based: the sort by cell moves
+                          particles, the id follows each one */
   pfield fields[PF_MAXFIELDS];
   int nfields;
   void *scratch;       /* cap * 8 bytes, for sorting */

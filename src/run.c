@@ -43,7 +43,7 @@ static int mkdirs(const char *path, char *err, size_t errlen) {
 
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "boundary_work", "total", "residual", "px", "py", "angmom",
-    "jmin", "jmax", "particles", "bond_work", "debonded"};
+    "jmin", "jmax", "particles", "debonded"};
 #define NCOLS (int)(sizeof cols / sizeof cols[0])
 
 static void csv_row(lua_State *L, lsim *ls) {
@@ -56,7 +56,7 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[8] = sim_residual(s);
   v[9] = s->e.mom[0]; v[10] = s->e.mom[1]; v[11] = s->e.angmom;
   v[12] = s->e.jmin; v[13] = s->e.jmax; v[14] = (double)s->ps.n;
-  v[15] = s->e.bond; v[16] = (double)s->ncut_total;
+  v[15] = (double)s->ncut_total;
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 

@@ -218,7 +218,7 @@ double sim_total(const sim *s) {
 }
 
 double sim_residual(const sim *s) {
-  return s->e.initial + s->e.boundary - s->e.friction - s->e.bond - sim_total(s);
+  return s->e.initial + s->e.boundary - s->e.friction - sim_total(s);
 }
 
 int constitutive(sim *s) {

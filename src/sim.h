@@ -47,8 +47,6 @@ typedef struct sim_energy {
   double kinetic, strain;
   double lag;        /* -dt/2 sum V sigma:D: see sim_total */
   double friction;   /* work dissipated by friction (walls + contacts) */
-  double bond;       /* kinetic energy of relative motion removed by bonded
-                        interfaces (bond.c) */
   double boundary;   /* work done on the material by walls / driven bodies */
   double initial;    /* kinetic + strain before the first step */
   double mom[DIM];
@@ -127,8 +125,8 @@ double sim_stable_dt(const sim *s);
 ** the lag term -dt/2 sum V sigma:D removes that first-order error (it
 ** is exact for a linear oscillator) */
 double sim_total(const sim *s);
-/* the budget's residual: initial + boundary work - friction - bond work
-** - total; zero for a perfect accounting */
+/* the budget's residual: initial + boundary work - friction - total;
+** zero for a perfect accounting */
 double sim_residual(const sim *s);
 /* recompute kinetic energy, momenta and strain energy from particles */
 void sim_measure(sim *s);

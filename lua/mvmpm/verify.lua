@@ -5,8 +5,9 @@ local M = {passed = 0, failed = 0}
 
 local function report(ok, name, measured, ref, tol, note)
   if ok then M.passed = M.passed + 1 else M.failed = M.failed + 1 end
-  print(string.format("%s %-52s measured %-12.5g %s %-12.5g %s",
-    ok and "ok  " or "FAIL", name, measured, ref[1], ref[2], tol or ""))
+  local r = type(ref[2]) == "number" and string.format("%.5g", ref[2]) or ref[2]
+  print(string.format("%s %-52s measured %-12.5g %s %-12s %s",
+    ok and "ok  " or "FAIL", name, measured, ref[1], r, tol or ""))
   if note then print("     " .. note) end
   return ok
 end

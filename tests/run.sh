@@ -22,6 +22,11 @@ for t in "$unitdir"/test_*; do
   count "$log"
   [ $rc -eq 0 ] || grep -q 'failed' "$log" || fail=$((fail + 1))
 done
+# the REPL, typed at in tmux as a person would
+bash tests/repl/check.sh "./$bin" >"$log" 2>&1
+grep -E '^FAIL' "$log"
+tail -1 "$log"
+count "$log"
 "./$bin" test tests/verify/*.lua 2>&1 | tee "$log"
 rc=${PIPESTATUS[0]}
 count "$log"

@@ -2,6 +2,7 @@
 ** lcheck.c - checking scene tables with messages a user can act on.
 */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include "lcheck.h"
@@ -168,4 +169,15 @@ void chk_vec(lua_State *L, int idx, const char *what, const char *key,
     lua_pop(L, 1);
   }
   lua_pop(L, 1);
+}
+
+/* luaL_error with the C library's formats (lua_pushfstring knows no %g):
+** the message is formatted here, then raised with the scene's position */
+int chk_error(lua_State *L, const char *fmt, ...) {
+  char buf[512];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  return luaL_error(L, "%s", buf);
 }

@@ -29,6 +29,9 @@ int chk_bool(lua_State *L, int idx, const char *what, const char *key,
 /* vector field {x, y}: fills v (defaults kept if absent) */
 void chk_vec(lua_State *L, int idx, const char *what, const char *key,
              double *v, int n, int required);
+/* luaL_error with printf formats (%g, %.3g ...), which luaL_error lacks */
+int chk_error(lua_State *L, const char *fmt, ...)
+    __attribute__((format(printf, 2, 3)));
 /* the closest allowed word to key, or NULL if none is close */
 const char *chk_suggest(const char *key, const char *const allowed[]);
 

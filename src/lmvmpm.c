@@ -15,6 +15,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "lauxlib.h"
+#include "lcheck.h"
 #include "lmvmpm.h"
 #include "lsim.h"
 #include "lualib.h"
@@ -82,28 +83,49 @@ static int params(lua_State *L) {
   return 1;
 }
 
+static int strptrcmp(const void *a, const void *b) {
+  return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
 int lmvmpm_check_overrides(lua_State *L) {
+  int ov, decl;
   regtable(L, "mvmpm.overrides");
+  ov = lua_gettop(L);
   regtable(L, "mvmpm.declared");
+  decl = lua_gettop(L);
   lua_pushnil(L);
-  while (lua_next(L, -3)) {
+  while (lua_next(L, ov)) {
     const char *name = lua_tostring(L, -2);
     lua_pop(L, 1);
-    if (lua_getfield(L, -2, name) == LUA_TNIL) {
+    if (lua_getfield(L, decl, name) == LUA_TNIL) {
+      const char *names[65];
+      const char *hint;
       luaL_Buffer b;
-      int first = 1;
-      luaL_buffinit(L, &b);
+      int n = 0, k;
+      lua_pop(L, 1);
       lua_pushnil(L);
-      while (lua_next(L, -4)) {
+      while (lua_next(L, decl) && n < 64) {
         lua_pop(L, 1);
-        if (!first) luaL_addstring(&b, ", ");
-        luaL_addstring(&b, lua_tostring(L, -1));
-        first = 0;
+        names[n++] = lua_tostring(L, -1); /* keys stay alive in decl */
       }
+      if (n == 64) lua_pop(L, 1);
+      names[n] = NULL;
+      qsort(names, n, sizeof *names, strptrcmp);
+      hint = chk_suggest(name, names);
+      /* the buffer lives on the stack: the tables are indexed absolutely */
+      luaL_buffinit(L, &b);
+      for (k = 0; k < n; k++) {
+        if (k) luaL_addstring(&b, ", ");
+        luaL_addstring(&b, names[k]);
+      }
+      if (!n) luaL_addstring(&b, "none");
       luaL_pushresult(&b);
-      lua_pushfstring(L, "--set %s: the scene declares no parameter '%s' "
+      lua_pushfstring(L, "--set %s: the scene declares no parameter '%s'%s%s%s "
                          "(it declares: %s)", name, name,
-                      first ? "none" : lua_tostring(L, -1));
+                      hint ? " (did you mean '" : "", hint ? hint : "",
+                      hint ? "'?)" : "", lua_tostring(L, -1));
+      lua_replace(L, ov);
+      lua_settop(L, ov);
       return -1;
     }
     lua_pop(L, 1);

@@ -53,18 +53,28 @@ static int matindex(lua_State *L, int simidx, int idx) {
 }
 
 /* field for the body: shared by name, or a new one */
-static int32_t fieldof(lua_State *L, int simidx, lsim *ls) {
+/* field for the body: shared by name, or a new one.  fields = "single"
+** puts every body that names no field on one shared field, except driven
+** bodies: a drive moves its whole field, so a driven body always has a
+** field of its own and meets the others through contact */
+static int32_t fieldof(lua_State *L, int simidx, lsim *ls, int driven) {
   int32_t f;
-  if (ls->fields_single) return 0;
   lua_getfield(L, 2, "field");
-  if (lua_isnil(L, -1)) { lua_pop(L, 1); return -1; }
-  if (lua_type(L, -1) != LUA_TSTRING)
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    if (!ls->fields_single || driven) return -1;
+    lua_pushstring(L, "(all bodies)");
+  } else if (lua_type(L, -1) != LUA_TSTRING)
     luaL_error(L, "body: field 'field' must be a name (string) shared by the "
                   "bodies that move as one velocity field");
   lsim_uv(L, simidx, "fieldnames");
   lua_pushvalue(L, -2);
   if (lua_rawget(L, -2) == LUA_TNUMBER) {
     f = (int32_t)lua_tointeger(L, -1);
+    if (driven || ls->s.fdriven[f] >= 0)
+      luaL_error(L, "body: a driven body moves its whole velocity field, so it "
+                    "cannot share field '%s' with another body",
+                 lua_tostring(L, -3));
     lua_pop(L, 3);
     return f;
   }
@@ -128,7 +138,7 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
         if (!lshape_inside(L, shidx, sh, x)) continue;
         if (ls->occ[k] >= 0) {
           if (skip_taken) continue;
-          luaL_error(L, "body '%s' overlaps body '%s' at (%g, %g); move it, or "
+          chk_error(L, "body '%s' overlaps body '%s' at (%g, %g); move it, or "
                         "give overlap = \"skip\" to seed only the free points",
                      lua_tostring(L, -1), ls->s.bodies[ls->occ[k]].name, x[0],
                      x[1]);
@@ -184,11 +194,11 @@ static void seed_points(lua_State *L, lsim *ls, seed *sd) {
       lua_pop(L, 1);
     }
     if (!(vol > 0))
-      luaL_error(L, "body: point %d has volume %g; volumes must be > 0", (int)k,
+      chk_error(L, "body: point %d has volume %g; volumes must be > 0", (int)k,
                  vol);
     for (d = 0; d < DIM; d++)
       if (x[d] < ls->s.g.lo[d] || x[d] >= ls->s.g.hi[d])
-        luaL_error(L, "body: point %d (%g, %g) lies outside the domain", (int)k,
+        chk_error(L, "body: point %d (%g, %g) lies outside the domain", (int)k,
                    x[0], x[1]);
     seed_push(L, sd, x, vol);
   }
@@ -288,7 +298,9 @@ int lbody_new(lua_State *L) {
     luaL_error(L, "body '%s': no particle falls inside its shape (is it inside "
                   "the domain and at least one seeding point across?)", name);
   }
-  field = fieldof(L, 1, ls);
+  lua_getfield(L, 2, "driven");
+  field = fieldof(L, 1, ls, !lua_isnil(L, -1));
+  lua_pop(L, 1);
   b = sim_add_body(s, name, mi, field);
   if (b < 0) { free(sd.x); free(sd.vol); free(taken); luaL_error(L, "body: out of memory"); }
   for (k = 0; k < ntaken; k++) ls->occ[taken[k]] = b;

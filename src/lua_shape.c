@@ -72,7 +72,7 @@ static int rect(lua_State *L) {
   chk_vec(L, 1, "rect", "hi", hi, DIM, 1);
   for (d = 0; d < DIM; d++)
     if (!(hi[d] > lo[d]))
-      luaL_error(L, "rect: field 'hi' must exceed 'lo' in every coordinate "
+      chk_error(L, "rect: field 'hi' must exceed 'lo' in every coordinate "
                     "(coordinate %d: lo %g, hi %g)", d + 1, lo[d], hi[d]);
   sh = newshape(L, SH_RECT, 0);
   for (d = 0; d < DIM; d++) { sh->lo[d] = lo[d]; sh->hi[d] = hi[d]; }

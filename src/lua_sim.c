@@ -52,6 +52,13 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
   lua_setfield(L, idx, "kind");
   sd->kind = kind;
   periodic[k] = kind == SIDE_PERIODIC;
+  if (kind != SIDE_WALL) {
+    lua_getfield(L, idx, "friction");
+    if (!lua_isnil(L, -1))
+      luaL_error(L, "%s: only a wall has friction (this side is %s)", what,
+                 side_kinds[kind]);
+    lua_pop(L, 1);
+  }
   lua_getfield(L, idx, "friction");
   if (lua_type(L, -1) == LUA_TSTRING && strcmp(lua_tostring(L, -1), "stick") == 0)
     sd->mu = INFINITY;
@@ -69,6 +76,10 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
   } else if (!lua_isnil(L, -1)) {
     if (kind != SIDE_WALL) luaL_error(L, "%s: only a wall can move", what);
     chk_vec(L, idx, what, "velocity", sd->v, DIM, 1);
+    if (sd->v[k / 2] != 0)
+      chk_error(L, "%s: the wall slides along its own line: velocity's %c "
+                   "component must be 0 (got %g)", what, "xyz"[k / 2],
+                sd->v[k / 2]);
   }
   lua_pop(L, 1);
 }
@@ -131,7 +142,7 @@ int lsim_new(lua_State *L) {
       double r[2];
       chk_vec(L, -1, "sim.domain", dk[d], r, 2, 1);
       if (!(r[1] > r[0]))
-        luaL_error(L, "sim.domain: %s = {%g, %g} must have max > min", dk[d], r[0], r[1]);
+        chk_error(L, "sim.domain: %s = {%g, %g} must have max > min", dk[d], r[0], r[1]);
       lo[d] = r[0];
       hi[d] = r[1];
     }
@@ -142,7 +153,7 @@ int lsim_new(lua_State *L) {
   for (d = 0; d < DIM; d++) {
     double c = (hi[d] - lo[d]) / h;
     if (fabs(c - floor(c + 0.5)) > 1e-6 * c)
-      luaL_error(L, "sim: the domain's extent along %c (%g) must be a whole "
+      chk_error(L, "sim: the domain's extent along %c (%g) must be a whole "
                     "number of cells of size %g (got %g cells)", "xyz"[d],
                  hi[d] - lo[d], h, c);
     nodes *= c + 3;
@@ -152,7 +163,7 @@ int lsim_new(lua_State *L) {
   bytes = grid_bytes(lo, hi, h, shape_pad(shape)) +
           nodes * pow(ppc, DIM) * (8.0 * (2 * DIM + 2 + 2 * NTENS + NSTRESS + 2) + 16);
   if (bytes > 16e9)
-    luaL_error(L, "sim: %.3g cells would need about %.1f GB (limit 16 GB); "
+    chk_error(L, "sim: %.3g cells would need about %.1f GB (limit 16 GB); "
                   "use a coarser 'cell' or a smaller domain", nodes, bytes / 1e9);
   /* sides */
   lua_getfield(L, 1, "sides");
@@ -177,7 +188,10 @@ int lsim_new(lua_State *L) {
         lua_pop(L, 1);
       }
     } else if (lua_istable(L, sidx)) {
-      chk_keys(L, sidx, "sides", side_names);
+      const char *sk[NSIDES + 1]; /* the sides this dimension has */
+      for (k = 0; k < NSIDES; k++) sk[k] = side_names[k];
+      sk[NSIDES] = NULL;
+      chk_keys(L, sidx, "sides", sk);
       for (k = 0; k < NSIDES; k++) {
         lua_getfield(L, sidx, side_names[k]);
         if (lua_isnil(L, -1)) { lua_pop(L, 1); lua_pushstring(L, "wall"); }
@@ -361,10 +375,7 @@ static void setnum(lua_State *L, const char *k, double v) {
 static int lenergy(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
-  if (!s->started) {
-    sim_measure(s);
-    s->e.initial = s->e.kinetic + s->e.strain;
-  }
+  if (!s->started) sim_begin(s);
   lua_createtable(L, 0, 14);
   setnum(L, "kinetic", s->e.kinetic);
   setnum(L, "strain", s->e.strain);
@@ -437,7 +448,7 @@ static int lparticles(lua_State *L) {
 
 static int lstable_dt(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
-  if (!ls->s.started) sim_measure(&ls->s);
+  if (!ls->s.started) sim_begin(&ls->s);
   lua_pushnumber(L, sim_stable_dt(&ls->s));
   return 1;
 }
@@ -447,7 +458,10 @@ static int lindex(lua_State *L) {
   sim *s = &ls->s;
   const char *k = luaL_checkstring(L, 2);
   if (strcmp(k, "t") == 0) lua_pushnumber(L, s->t);
-  else if (strcmp(k, "dt") == 0) lua_pushnumber(L, s->started ? s->dt : sim_stable_dt(s));
+  else if (strcmp(k, "dt") == 0) {
+    if (!s->started) sim_begin(s);
+    lua_pushnumber(L, s->dt);
+  }
   else if (strcmp(k, "step") == 0 || strcmp(k, "steps") == 0) lua_pushinteger(L, s->step);
   else if (strcmp(k, "t_end") == 0) lua_pushnumber(L, s->t_end);
   else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)s->ps.n);

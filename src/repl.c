@@ -321,7 +321,8 @@ static int putvalues(lua_State *L) {
 }
 
 
-/* Print the values above base through 'print'. */
+/* Print the values above base through the global 'show' (mvmpm.repl's
+** readable tables) if there is one, else through 'print'. */
 static int show(lua_State *L, int base) {
   int n = lua_gettop(L) - base;
   int status;
@@ -332,9 +333,12 @@ static int show(lua_State *L, int base) {
     lua_pushliteral(L, "too many results to print");
     return LUA_ERRRUN;
   }
-  if (rawglobal(L, "print") != LUA_TFUNCTION) {
+  if (rawglobal(L, "show") != LUA_TFUNCTION) {
     lua_pop(L, 1);
-    lua_pushcfunction(L, putvalues);
+    if (rawglobal(L, "print") != LUA_TFUNCTION) {
+      lua_pop(L, 1);
+      lua_pushcfunction(L, putvalues);
+    }
   }
   lua_insert(L, base + 1);
   status = docall(L, n, 0);

@@ -13,6 +13,7 @@
 #include <time.h>
 #include <unistd.h>
 #include "interrupt.h"
+#include "lcheck.h"
 #include "lsim.h"
 #include "out_h5.h"
 
@@ -105,6 +106,7 @@ static void out_start(lua_State *L, lsim *ls) {
   char err[512], path[1100];
   if (!ls->out_enabled || !ls->outdir[0] || ls->csv_open) return;
   if (mkdirs(ls->outdir, err, sizeof err)) luaL_error(L, "%s", err);
+  if (!ls->s.started) sim_begin(&ls->s); /* the first row is the start */
   if (ls->csv_every > 0) {
     snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
     if (out_csv_open(&ls->csv, path, cols, NCOLS, err, sizeof err))
@@ -141,7 +143,7 @@ static void drives(lua_State *L, int simidx, lsim *ls) {
         int isnum;
         double v = lua_tonumberx(L, d - DIM, &isnum);
         if (!isnum || !isfinite(v))
-          luaL_error(L, "drive of body '%s' returned a non-number at t = %g",
+          chk_error(L, "drive of body '%s' returned a non-number at t = %g",
                      ls->s.bodies[b].name, ls->s.t);
         ls->s.bodies[b].vdrive[d] = v;
       }
@@ -159,7 +161,11 @@ static void drives(lua_State *L, int simidx, lsim *ls) {
         int isnum;
         double v = lua_tonumberx(L, d - DIM, &isnum);
         if (!isnum || !isfinite(v))
-          luaL_error(L, "velocity of side %d returned a non-number at t = %g", k + 1, ls->s.t);
+          chk_error(L, "velocity of side %d returned a non-number at t = %g", k + 1, ls->s.t);
+        if (d == k / 2 && v != 0)
+          chk_error(L, "velocity of side %d at t = %g: the wall slides along "
+                       "its own line, so the %c component must be 0 (got %g)",
+                    k + 1, ls->s.t, "xyz"[d], v);
         ls->s.sides[k].v[d] = v;
       }
       lua_pop(L, DIM);
@@ -232,6 +238,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   simidx = lua_absindex(L, simidx);
   if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
   out_start(L, ls);
+  s->t_stop = t_end;
   while ((max_steps < 0 || k < max_steps) && s->t < t_end - 1e-12 * (1 + fabs(t_end))) {
     if (ls->drives || ls->sidefns) drives(L, simidx, ls);
     if (sim_step(s)) luaL_error(L, "%s", s->err);

@@ -20,6 +20,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->t_end = 1.0;
   s->gap_check = 1;
   s->bond_default = INFINITY;
+  s->t_stop = INFINITY;
   s->fbond = -1;
   s->mcut_rel = 1e-9;
   s->sort_every = 20;
@@ -259,7 +260,7 @@ static void housekeeping(sim *s) {
   }
 }
 
-static int start(sim *s) {
+void sim_begin(sim *s) {
   const particles *ps = &s->ps;
   double mmin = 1e300;
   size_t i;
@@ -269,14 +270,19 @@ static int start(sim *s) {
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain;
   s->e.jmin = s->e.jmax = 1;
-  s->started = 1;
-  return 0;
+  s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
 }
 
 int sim_step(sim *s) {
   int musl = s->update == UPDATE_MUSL;
-  if (!s->started && start(s)) return -1;
+  if (!s->started) {
+    sim_begin(s);
+    s->started = 1;
+  }
   s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  /* land on the end of a run rather than overshoot it; a sliver shorter
+  ** than a thousandth of a step is absorbed by the step before */
+  if (s->t_stop > s->t && s->t + s->dt * 1.001 > s->t_stop) s->dt = s->t_stop - s->t;
   grid_reset(&s->g, musl);
   if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");

@@ -64,6 +64,7 @@ typedef struct sim {
   double cfl;        /* Courant number for the automatic step */
   double dt_fixed;   /* > 0: fixed step */
   double dt, t, t_end;
+  double t_stop;     /* a step ends here at the latest (run_until's end) */
   long step;
   double gravity[DIM];
   side sides[NSIDES];
@@ -115,6 +116,10 @@ int sim_enable_bonds(sim *s);
 /* append a particle of body b at x with volume vol; index or -1 */
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],
                       const double v[DIM], double vol);
+/* the state before the first step: energies, momenta, the initial energy
+** of the budget and the first dt; the first step calls it, and anything
+** that reports the state before then may (bodies can still be added) */
+void sim_begin(sim *s);
 /* one explicit step; 0, or -1 with s->err (e.g. det F <= 0) */
 int sim_step(sim *s);
 /* the step the CFL rule gives now */

@@ -1,4 +1,6 @@
--- mvmpm.repl: help at the prompt, and readable energy and body tables.
+-- mvmpm.repl: help at the prompt, and readable tables: the prompt shows
+-- a result through show(), which prints a table's entries sorted by key,
+-- numbers to 6 significant digits, one level deep.
 local text = [[
 sim:step(n)          advance n steps (default 1)
 sim:run(t)           advance to time t (default: the scene's t_end)
@@ -6,7 +8,48 @@ sim:energy()         kinetic, strain, dissipated, boundary_work, total, residual
 sim:bodies()         the bodies; b:diag(), b:centroid(), b:velocity(), b:omega(), b:mass()
 sim:particles(name)  copy of a particle field (sim:particles() lists them)
 sim:snapshot(path)   write an HDF5 snapshot now
-sim.t sim.dt sim.step sim.n   time, step size, step count, particle count
+sim.t sim.dt sim.steps sim.n   time, step size, step count, particle count
 sim.flip = f  sim.cfl = c  sim.dt = d  sim.friction = mu   change settings between steps
+show(v)              print a value as the prompt does (tables sorted, one level)
 Ctrl-C stops running steps; Ctrl-D leaves.]]
 function help() print(text) end
+
+local function fmt(v)
+  if math.type(v) == "float" then return string.format("%.6g", v) end
+  if type(v) == "string" then return string.format("%q", v) end
+  return tostring(v)
+end
+
+local function tab(t)
+  local keys, parts = {}, {}
+  for k in pairs(t) do keys[#keys + 1] = k end
+  if #keys == 0 then return "{}" end
+  table.sort(keys, function(a, b)
+    local ta, tb = type(a), type(b)
+    if ta ~= tb then return ta < tb end
+    if ta == "number" or ta == "string" then return a < b end
+    return tostring(a) < tostring(b)
+  end)
+  local n = #t
+  for _, k in ipairs(keys) do
+    local v = t[k]
+    local vs = type(v) == "table" and (getmetatable(v) and tostring(v) or
+               string.format("{...%d}", #v)) or fmt(v)
+    if math.type(k) == "integer" and k >= 1 and k <= n then parts[#parts + 1] = vs
+    else parts[#parts + 1] = tostring(k) .. " = " .. vs end
+  end
+  local one = "{" .. table.concat(parts, ", ") .. "}"
+  if #one <= 100 then return one end
+  return "{\n  " .. table.concat(parts, ",\n  ") .. "\n}"
+end
+
+function show(...)
+  local out = {}
+  for i = 1, select("#", ...) do
+    local v = select(i, ...)
+    if type(v) == "table" and not getmetatable(v) then out[i] = tab(v)
+    elseif type(v) == "string" then out[i] = v  -- as the lua prompt does
+    else out[i] = fmt(v) end
+  end
+  print(table.concat(out, "\t"))
+end

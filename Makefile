@@ -59,5 +59,13 @@ bench: $(BIN)
 clean:
 	rm -rf build build-san mvmpm
 
-.PHONY: all deps unit test bench clean
+.PHONY: all deps unit test bench clean check-paraview
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
+
+# ParaView (Debian's paraview, not a build dependency) opens a run's XDMF
+# series and must see every particle and every array of every snapshot
+check-paraview: $(BIN)
+	@rm -rf build/check-paraview
+	./$(BIN) run scenarios/cylinder_bounce.lua --set friction=0.1 --out build/check-paraview --quiet
+	pvbatch tests/tools/check_xdmf.py build/check-paraview/particles.xmf \
+	  $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done)

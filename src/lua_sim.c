@@ -353,10 +353,13 @@ static int lenergy(lua_State *L) {
   setnum(L, "kinetic", s->e.kinetic);
   setnum(L, "strain", s->e.strain);
   setnum(L, "dissipated", s->e.friction);
+  setnum(L, "plastic", s->e.plastic);
+  setnum(L, "viscous", s->e.viscous);
   setnum(L, "boundary_work", s->e.boundary);
+  setnum(L, "thermal_work", s->e.thermal);
   setnum(L, "initial", s->e.initial);
   setnum(L, "total", sim_total(s));
-  setnum(L, "residual", s->e.initial + s->e.boundary - s->e.friction - sim_total(s));
+  setnum(L, "residual", sim_residual(s));
   setnum(L, "px", s->e.mom[0]);
   setnum(L, "py", s->e.mom[1]);
   setnum(L, "angmom", s->e.angmom);
@@ -444,7 +447,10 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
   else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL ? "musl" : "usl");
   else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);
-  else {
+  else if (strcmp(k, "temperature") == 0) {
+    if (s->temp_on) lua_pushnumber(L, s->temp);
+    else lua_pushnil(L);
+  } else {
     luaL_getmetafield(L, 1, "methods");
     lua_getfield(L, -1, k);
   }
@@ -484,7 +490,8 @@ void lsim_open(lua_State *L) {
       {"body", lbody_new}, {"contact", lcontact}, {"every", levery},
       {"output", loutput}, {"step", lstep}, {"run", lrun},
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
-      {"particles", lparticles}, {"stable_dt", lstable_dt}, {NULL, NULL}};
+      {"particles", lparticles}, {"stable_dt", lstable_dt},
+      {"temperature", lsim_temperature}, {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);
   lua_setfield(L, -2, "__index");

@@ -14,10 +14,10 @@
 ** Plastic work of a step is the flow stress integrated over the plastic
 ** strain increment, exact for linear hardening:
 **   dW = dep (q_y(ep) + H dep / 2)
-** It is kept per unit reference volume in the field "plastic_work"
-** (times J, so that it is the work of the Cauchy stress in the current
-** volume) and summed into the energy budget.  The stored energy is the
-** elastic energy of the stress, which is the elastic part only.
+** It is kept per unit reference volume in the field "plastic_work" and
+** summed into the energy budget; like the stored energy (the elastic
+** energy of the stress, so the elastic part only) it is reckoned per
+** reference volume, the small-strain convention of every model here.
 */
 #include <math.h>
 #include "material.h"
@@ -59,7 +59,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
       int k;
       for (k = 0; k < NSTRESS; k++) s[k] = f * d[k];
       s[S_XX] += p; s[S_YY] += p; s[S_ZZ] += p;
-      w = J * dep * (qy + 0.5 * H * dep);
+      w = dep * (qy + 0.5 * H * dep);
       ep[i] += dep;
       wp[i] += w;
       plastic += ps->vol0[i] * w;

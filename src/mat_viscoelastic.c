@@ -16,11 +16,15 @@
 ** with the same objective rotation as the stress, before the update.
 **
 ** Dissipation of element k over the step is the exact integral of
-** s_k : s_k / (2 G_k tau_k) along that same exponential path; with
-** w = s_k(start) - B, B = 2 G_k tau_k d the steady state,
-**   int |s|^2 dt = |B|^2 dt + 2 B:w tau (1 - e) + |w|^2 tau (1 - e^2) / 2.
-** It is kept per unit reference volume in "viscous_work" and summed into
-** the energy budget.  Stored energy: p^2/(2K) + |s_inf|^2/(4 G_inf) +
+** s_k : s_k / (2 G_k tau_k) along that same exponential path,
+** s(t) = x E + 2 G tau d (1 - E), E = exp(-t / tau), x the start value:
+**   int |s|^2 dt / (2 G tau) = |x|^2 tau (1 - e^2) / (4 G tau)
+**                            + x:d tau (1 - e)^2 + |d|^2 2 G tau^2 f(dt/tau)
+** with f(u) = u - 2 (1 - e^-u) + (1 - e^-2u) / 2 = u^3/3 - u^4/4 + ...,
+** summed as its series for small u where the closed form cancels.
+** It is kept per unit reference volume in "viscous_work" (like the
+** stored energy: the small-strain convention) and summed into the energy
+** budget.  Stored energy: p^2/(2K) + |s_inf|^2/(4 G_inf) +
 ** sum |s_k|^2/(4 G_k).
 **
 ** Element stresses are deviatoric, so each is stored as xx, yy, xy (zz
@@ -62,8 +66,8 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
                    int32_t id, double dt, mat_sums *sum) {
   const int n = m->nprony;
   const double K = m->K, g2 = 2.0 * m->G_inf;
-  double e[MAT_MAXPRONY], B[MAT_MAXPRONY], c2[MAT_MAXPRONY], c3[MAT_MAXPRONY],
-      inv[MAT_MAXPRONY];
+  double e[MAT_MAXPRONY], B[MAT_MAXPRONY], k1[MAT_MAXPRONY], k2[MAT_MAXPRONY],
+      k3[MAT_MAXPRONY];
   double *a[MAT_MAXPRONY][3];
   double *vw = particles_comp(ps, m->field[F_VW], 0);
   double s[NSTRESS], D[NSTRESS], d[NSTRESS], strain = 0, power = 0, visc = 0;
@@ -71,12 +75,17 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   int k, c;
   /* per-step constants: no exp() per particle */
   for (k = 0; k < n; k++) {
-    double tau = m->prony_tau[k], x = dt / tau, om = -expm1(-x);
+    double tau = m->prony_tau[k], G = m->prony_G[k], u = dt / tau;
+    double om = -expm1(-u), f;
+    if (u < 1e-3) /* the closed form loses (1e-16 / u) of the work here */
+      f = u * u * u * (1.0 / 3 + u * (-1.0 / 4 + u * (7.0 / 60 - u / 24)));
+    else
+      f = u - 2.0 * om + 0.5 * om * (2.0 - om);
     e[k] = 1.0 - om;
-    B[k] = 2.0 * m->prony_G[k] * tau;         /* steady state per unit d */
-    c2[k] = 2.0 * tau * om;                   /* coefficient of B:w */
-    c3[k] = 0.5 * tau * om * (2.0 - om);      /* tau (1 - e^2) / 2 */
-    inv[k] = 1.0 / (2.0 * m->prony_G[k] * tau);
+    B[k] = 2.0 * G * tau * om;      /* approach to the steady state 2 G tau d */
+    k1[k] = om * (2.0 - om) / (4.0 * G);      /* tau (1 - e^2) / (4 G tau) */
+    k2[k] = tau * om * om;
+    k3[k] = 2.0 * G * tau * tau * f;
     for (c = 0; c < 3; c++) a[k][c] = particles_comp(ps, m->field[k], c);
   }
   for (i = 0; i < ps->n; i++) {
@@ -97,23 +106,20 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     s[S_XX] += K * tr * dt; s[S_YY] += K * tr * dt; s[S_ZZ] += K * tr * dt;
     en = 0;
     for (k = 0; k < n; k++) {
-      double x[NSTRESS], y[NSTRESS], Bk = B[k];
+      double x[NSTRESS], y[NSTRESS];
       x[S_XX] = a[k][0][i]; x[S_YY] = a[k][1][i]; x[S_XY] = a[k][2][i];
       x[S_ZZ] = 0;
       mat_rotate(cs, sn, x);
       x[S_ZZ] = -(x[S_XX] + x[S_YY]);
       for (c = 0; c < NSTRESS; c++) {
-        y[c] = e[k] * x[c] + Bk * (1.0 - e[k]) * d[c];
+        y[c] = e[k] * x[c] + B[k] * d[c];
         s[c] += y[c] - x[c];
-        x[c] -= Bk * d[c];  /* w = start - steady state */
       }
-      w += inv[k] * (Bk * Bk * dd * dt + c2[k] * Bk * ddot(d, x) +
-                     c3[k] * ddot(x, x));
+      w += k1[k] * ddot(x, x) + k2[k] * ddot(x, d) + k3[k] * dd;
       en += ddot(y, y) / (4.0 * m->prony_G[k]);
       a[k][0][i] = y[S_XX]; a[k][1][i] = y[S_YY]; a[k][2][i] = y[S_XY];
     }
 #endif
-    w *= J;
     vw[i] += w;
     visc += ps->vol0[i] * w;
     mat_put(ps, i, s);

@@ -447,10 +447,7 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
   else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL ? "musl" : "usl");
   else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);
-  else if (strcmp(k, "temperature") == 0) {
-    if (s->temp_on) lua_pushnumber(L, s->temp);
-    else lua_pushnil(L);
-  } else {
+  else {
     luaL_getmetafield(L, 1, "methods");
     lua_getfield(L, -1, k);
   }

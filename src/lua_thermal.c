@@ -1,6 +1,7 @@
 /*
 ** lua_thermal.c - sim:temperature(T) or sim:temperature(function(t)
-** return T end): impose a uniform temperature.  A function is called
+** return T end): impose a uniform temperature; sim:temperature() reads
+** it (nil if none is imposed).  A function is called
 ** between steps, once per step, with the time at the end of the coming
 ** step (run.c); its value is the temperature every particle has when the
 ** step ends, so each step's change is T(t + dt) - T(t).  A number holds
@@ -35,6 +36,11 @@ int lsim_temperature(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   double T;
+  if (lua_isnoneornil(L, 2)) {
+    if (s->temp_on) lua_pushnumber(L, s->temp);
+    else lua_pushnil(L);
+    return 1;
+  }
   lua_settop(L, 2);
   lua_getiuservalue(L, 1, 1);
   if (lua_isfunction(L, 2)) {

@@ -200,8 +200,18 @@ static int index_(lua_State *L) {
 
 static int tostr(lua_State *L) {
   material *m = lmat_check(L, 1);
-  lua_pushfstring(L, "material %s (%s, K=%f G=%f density=%f)", m->name,
-                  m->model->name, m->K, m->G, m->rho);
+  char buf[160];
+  int n = snprintf(buf, sizeof buf, "material %s (%s, K=%g G=%g density=%g",
+                   m->name, m->model->name, m->K, m->G, m->rho);
+  if (m->model == &mat_plastic && n > 0 && n < (int)sizeof buf)
+    n += snprintf(buf + n, sizeof buf - n, " yield=%g hardening=%g", m->yield,
+                  m->hardening);
+  if (m->model == &mat_viscoelastic && n > 0 && n < (int)sizeof buf)
+    n += snprintf(buf + n, sizeof buf - n, " G_inf=%g, %d Maxwell elements",
+                  m->G_inf, m->nprony);
+  if (m->alpha != 0 && n > 0 && n < (int)sizeof buf)
+    snprintf(buf + n, sizeof buf - n, " alpha=%g T_ref=%g", m->alpha, m->T_ref);
+  lua_pushfstring(L, "%s)", buf);
   return 1;
 }
 

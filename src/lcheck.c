@@ -86,7 +86,7 @@ static void range(char *buf, size_t n, double lo, double hi, int flags) {
 double chk_num(lua_State *L, int idx, const char *what, const char *key,
                double def, double lo, double hi, int flags) {
   double v;
-  char r[80];
+  char r[80], got[32];
   int isnum;
   lua_getfield(L, idx, key);
   if (lua_isnil(L, -1)) {
@@ -101,12 +101,14 @@ double chk_num(lua_State *L, int idx, const char *what, const char *key,
                luaL_typename(L, -1));
   lua_pop(L, 1);
   range(r, sizeof r, lo, hi, flags);
+  /* lua_pushfstring knows no %g: format the number here */
+  snprintf(got, sizeof got, "%g", v);
   if (!isfinite(v) || v < lo || v > hi || ((flags & CHK_OPENLO) && v == lo) ||
       ((flags & CHK_OPENHI) && v == hi))
-    luaL_error(L, "%s: field '%s' must be %s (got %g)", what, key, r, v);
+    luaL_error(L, "%s: field '%s' must be %s (got %s)", what, key, r, got);
   if ((flags & CHK_INT) && v != floor(v))
-    luaL_error(L, "%s: field '%s' must be a whole number (got %g)", what, key,
-               v);
+    luaL_error(L, "%s: field '%s' must be a whole number (got %s)", what, key,
+               got);
   return v;
 }
 

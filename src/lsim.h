@@ -7,6 +7,7 @@
 **   every   array of {fn=, time=|steps=, next=}
 **   drives  body index -> function(t) returning the velocity
 **   sidefn  side index -> function(t) returning the wall velocity
+**   temperature  function(t) returning the uniform temperature, or nil
 */
 #ifndef mvmpm_lsim_h
 #define mvmpm_lsim_h
@@ -42,6 +43,7 @@ typedef struct lsim {
   char scene[512];        /* scene file, for messages and snapshots */
   char units[32];
   int drives, sidefns, nevery;
+  int tempfn;             /* uv.temperature is a function of time */
 } lsim;
 
 typedef struct lbody {
@@ -75,6 +77,9 @@ lshape *lshape_check(lua_State *L, int idx);
 /* is (x) inside the shape at idx?  SH_FUNC calls the Lua function */
 int lshape_inside(lua_State *L, int idx, const lshape *sh, const double *x);
 double lshape_area(const lshape *sh);   /* < 0 if not known */
+/* lua_thermal.c: sim:temperature(T | function(t)) */
+int lsim_temperature(lua_State *L);
+double lsim_temperature_at(lua_State *L, int simidx, double t);
 /* run.c */
 int run_until(lua_State *L, int simidx, double t_end, long max_steps);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);

@@ -13,6 +13,7 @@
 #include "diag.h"
 #include "lcheck.h"
 #include "lsim.h"
+#include "thermal.h"
 
 static lbody *checkbody(lua_State *L, int idx) {
   return luaL_checkudata(L, idx, LBODY_MT);
@@ -230,14 +231,15 @@ static void drive_spec(lua_State *L, lsim *ls, int simidx, int b) {
 int lbody_new(lua_State *L) {
   static const char *const keys[] = {"name", "shape", "points", "material",
       "velocity", "angular_velocity", "field", "driven", "volume", "overlap",
-      "bond", NULL};
+      "bond", "temperature", NULL};
   static const char *const vols[] = {"cell", "exact", NULL};
   static const char *const ovl[] = {"error", "skip", NULL};
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   seed sd = {0};
   size_t *taken = NULL, ntaken = 0, k;
-  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond;
+  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond, T0;
+  size_t first;
   int mi, b, d, exact, skip, isrest = 0, vfun;
   int32_t field;
   char name[32];
@@ -260,6 +262,7 @@ int lbody_new(lua_State *L) {
   lua_pop(L, 1);
   if (!vfun) chk_vec(L, 2, "body", "velocity", v0, DIM, 0);
   omega = chk_num(L, 2, "body", "angular_velocity", 0, -HUGE_VAL, HUGE_VAL, 0);
+  T0 = chk_num(L, 2, "body", "temperature", NAN, -HUGE_VAL, HUGE_VAL, 0);
   exact = chk_option(L, 2, "body", "volume", 0, vols);
   bond = chk_num(L, 2, "body", "bond", 0, 0, HUGE_VAL, 0);
   skip = chk_option(L, 2, "body", "overlap", 0, ovl);
@@ -307,6 +310,7 @@ int lbody_new(lua_State *L) {
   free(taken);
   for (k = 0; k < sd.n; k++)
     for (d = 0; d < DIM; d++) c[d] += sd.x[DIM * k + d] / sd.n;
+  first = s->ps.n;
   for (k = 0; k < sd.n; k++) {
     double *x = &sd.x[DIM * k], v[DIM];
     for (d = 0; d < DIM; d++) v[d] = v0[d];
@@ -335,12 +339,14 @@ int lbody_new(lua_State *L) {
   free(sd.vol);
   if (bond > 0) { /* strength of the body's bonds to its neighbours */
     double *bp;
-    size_t first = s->ps.n - sd.n;
     if (sim_enable_bonds(s) < 0) luaL_error(L, "body: out of memory for bonds");
     bp = particles_comp(&s->ps, s->fbond, 0);
     for (k = first; k < s->ps.n; k++) bp[k] = bond;
   }
   drive_spec(L, ls, 1, b);
+  /* initial temperature: the body's, else the scene's (thermal.h) */
+  if (!isnan(T0) && thermal_enable(s)) luaL_error(L, "body: out of memory");
+  thermal_seed(s, first, s->ps.n, isnan(T0) ? NULL : &T0);
   (void)isrest;
   return lbody_push(L, 1, b);
 }

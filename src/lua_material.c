@@ -1,9 +1,16 @@
 /*
-** lua_material.c - material constructors: mvmpm.elastic{...}.
+** lua_material.c - material constructors:
+**   mvmpm.elastic{K=, G= | E=, nu=, density=, alpha=, T_ref=, name=}
+**   mvmpm.plastic{K=, G= | E=, nu=, density=, yield=, hardening=0,
+**                 alpha=, T_ref=, name=}
+**   mvmpm.viscoelastic{K=, G_inf=0, prony = {{G=, tau=}, ...}, density=,
+**                      alpha=, T_ref=, name=}
 ** A material is a userdata holding its parameters; a simulation takes a
-** copy the first time a body uses it.
+** copy the first time a body uses it.  Reading a material's field gives
+** its parameters (m.K, m.yield, m.prony, ...).
 */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 #include "lcheck.h"
 #include "lsim.h"
@@ -31,21 +38,126 @@ static void moduli(lua_State *L, const char *what, double *K, double *G) {
   }
 }
 
+static const char *name_of(lua_State *L, const char *what) {
+  const char *name;
+  lua_getfield(L, 1, "name");
+  if (lua_isnil(L, -1)) name = what;
+  else if (lua_type(L, -1) == LUA_TSTRING) name = lua_tostring(L, -1);
+  else
+    return luaL_error(L, "%s: field 'name' must be a string (got %s)", what,
+                      luaL_typename(L, -1)), NULL;
+  lua_pop(L, 1); /* the table still holds the string */
+  return name;
+}
+
+/* alpha and T_ref, common to every model */
+static void thermal_keys(lua_State *L, const char *what, material *m) {
+  m->alpha = chk_num(L, 1, what, "alpha", 0, -HUGE_VAL, HUGE_VAL, 0);
+  m->T_ref = chk_num(L, 1, what, "T_ref", 0, -HUGE_VAL, HUGE_VAL, 0);
+}
+
+static material *newmat(lua_State *L) {
+  material *m = lua_newuserdatauv(L, sizeof *m, 0);
+  memset(m, 0, sizeof *m);
+  return m;
+}
+
 static int elastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
-                                     NULL};
+                                     "alpha", "T_ref", NULL};
   const char *what = "elastic";
-  material *m;
+  material tmp, *m;
   double K, G, rho;
   const char *name;
   luaL_checktype(L, 1, LUA_TTABLE);
   chk_keys(L, 1, what, keys);
   moduli(L, what, &K, &G);
   rho = chk_num(L, 1, what, "density", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
-  lua_getfield(L, 1, "name");
-  name = lua_isnil(L, -1) ? "elastic" : luaL_checkstring(L, -1);
-  m = lua_newuserdatauv(L, sizeof *m, 0);
-  material_init(m, &mat_elastic, name, rho, K, G);
+  name = name_of(L, what);
+  material_init(&tmp, &mat_elastic, name, rho, K, G);
+  thermal_keys(L, what, &tmp);
+  m = newmat(L);
+  *m = tmp;
+  luaL_setmetatable(L, LMAT_MT);
+  return 1;
+}
+
+static int plastic(lua_State *L) {
+  static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
+                                     "yield", "hardening", "alpha", "T_ref",
+                                     NULL};
+  const char *what = "plastic";
+  material tmp, *m;
+  double K, G, rho, y, H;
+  const char *name;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  chk_keys(L, 1, what, keys);
+  moduli(L, what, &K, &G);
+  rho = chk_num(L, 1, what, "density", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  y = chk_num(L, 1, what, "yield", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  H = chk_num(L, 1, what, "hardening", 0, 0, HUGE_VAL, 0);
+  name = name_of(L, what);
+  if (material_plastic(&tmp, name, rho, K, G, y, H))
+    luaL_error(L, "%s: inconsistent parameters", what);
+  thermal_keys(L, what, &tmp);
+  m = newmat(L);
+  *m = tmp;
+  luaL_setmetatable(L, LMAT_MT);
+  return 1;
+}
+
+/* prony = {{G = , tau = }, ...}: at most MAT_MAXPRONY elements */
+static int prony(lua_State *L, const char *what, double *G, double *tau) {
+  static const char *const keys[] = {"G", "tau", NULL};
+  lua_Integer n, k;
+  lua_getfield(L, 1, "prony");
+  if (lua_isnil(L, -1)) { lua_pop(L, 1); return 0; }
+  if (!lua_istable(L, -1))
+    luaL_error(L, "%s: field 'prony' must be a list of elements {G = , tau = } "
+                  "(got %s)", what, luaL_typename(L, -1));
+  n = luaL_len(L, -1);
+  if (n > MAT_MAXPRONY)
+    luaL_error(L, "%s: field 'prony' has %d elements; at most %d are allowed",
+               what, (int)n, MAT_MAXPRONY);
+  for (k = 1; k <= n; k++) {
+    char ew[48];
+    snprintf(ew, sizeof ew, "%s.prony[%d]", what, (int)k);
+    if (lua_geti(L, -1, k) != LUA_TTABLE)
+      luaL_error(L, "%s: must be a table {G = , tau = } (got %s)", ew,
+                 luaL_typename(L, -1));
+    chk_keys(L, -1, ew, keys);
+    G[k - 1] = chk_num(L, -1, ew, "G", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+    tau[k - 1] = chk_num(L, -1, ew, "tau", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return (int)n;
+}
+
+static int viscoelastic(lua_State *L) {
+  static const char *const keys[] = {"K", "G_inf", "prony", "density", "name",
+                                     "alpha", "T_ref", NULL};
+  const char *what = "viscoelastic";
+  material tmp, *m;
+  double K, Ginf, rho, G[MAT_MAXPRONY], tau[MAT_MAXPRONY];
+  const char *name;
+  int n;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  chk_keys(L, 1, what, keys);
+  K = chk_num(L, 1, what, "K", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  Ginf = chk_num(L, 1, what, "G_inf", 0, 0, HUGE_VAL, 0);
+  n = prony(L, what, G, tau);
+  if (n == 0 && Ginf == 0)
+    luaL_error(L, "%s: give a long-term modulus G_inf > 0 or at least one "
+                  "Maxwell element in 'prony' (a solid needs shear stiffness)",
+               what);
+  rho = chk_num(L, 1, what, "density", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  name = name_of(L, what);
+  if (material_viscoelastic(&tmp, name, rho, K, Ginf, n, G, tau))
+    luaL_error(L, "%s: inconsistent parameters", what);
+  thermal_keys(L, what, &tmp);
+  m = newmat(L);
+  *m = tmp;
   luaL_setmetatable(L, LMAT_MT);
   return 1;
 }
@@ -63,14 +175,43 @@ static int index_(lua_State *L) {
     lua_pushnumber(L, (3 * m->K - 2 * m->G) / (2 * (3 * m->K + m->G)));
   else if (strcmp(k, "E") == 0)
     lua_pushnumber(L, 9 * m->K * m->G / (3 * m->K + m->G));
-  else lua_pushnil(L);
+  else if (strcmp(k, "alpha") == 0) lua_pushnumber(L, m->alpha);
+  else if (strcmp(k, "T_ref") == 0) lua_pushnumber(L, m->T_ref);
+  else if (m->model == &mat_plastic && strcmp(k, "yield") == 0)
+    lua_pushnumber(L, m->yield);
+  else if (m->model == &mat_plastic && strcmp(k, "hardening") == 0)
+    lua_pushnumber(L, m->hardening);
+  else if (m->model == &mat_viscoelastic && strcmp(k, "G_inf") == 0)
+    lua_pushnumber(L, m->G_inf);
+  else if (m->model == &mat_viscoelastic && strcmp(k, "prony") == 0) {
+    int j;
+    lua_createtable(L, m->nprony, 0);
+    for (j = 0; j < m->nprony; j++) {
+      lua_createtable(L, 0, 2);
+      lua_pushnumber(L, m->prony_G[j]);
+      lua_setfield(L, -2, "G");
+      lua_pushnumber(L, m->prony_tau[j]);
+      lua_setfield(L, -2, "tau");
+      lua_rawseti(L, -2, j + 1);
+    }
+  } else lua_pushnil(L);
   return 1;
 }
 
 static int tostr(lua_State *L) {
   material *m = lmat_check(L, 1);
-  lua_pushfstring(L, "material %s (%s, K=%f G=%f density=%f)", m->name,
-                  m->model->name, m->K, m->G, m->rho);
+  char buf[160];
+  int n = snprintf(buf, sizeof buf, "material %s (%s, K=%g G=%g density=%g",
+                   m->name, m->model->name, m->K, m->G, m->rho);
+  if (m->model == &mat_plastic && n > 0 && n < (int)sizeof buf)
+    n += snprintf(buf + n, sizeof buf - n, " yield=%g hardening=%g", m->yield,
+                  m->hardening);
+  if (m->model == &mat_viscoelastic && n > 0 && n < (int)sizeof buf)
+    n += snprintf(buf + n, sizeof buf - n, " G_inf=%g, %d Maxwell elements",
+                  m->G_inf, m->nprony);
+  if (m->alpha != 0 && n > 0 && n < (int)sizeof buf)
+    snprintf(buf + n, sizeof buf - n, " alpha=%g T_ref=%g", m->alpha, m->T_ref);
+  lua_pushfstring(L, "%s)", buf);
   return 1;
 }
 
@@ -82,4 +223,8 @@ void lmat_open(lua_State *L, int modidx) {
   lua_pop(L, 1);
   lua_pushcfunction(L, elastic);
   lua_setfield(L, modidx, "elastic");
+  lua_pushcfunction(L, plastic);
+  lua_setfield(L, modidx, "plastic");
+  lua_pushcfunction(L, viscoelastic);
+  lua_setfield(L, modidx, "viscoelastic");
 }

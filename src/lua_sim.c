@@ -380,7 +380,10 @@ static int lenergy(lua_State *L) {
   setnum(L, "kinetic", s->e.kinetic);
   setnum(L, "strain", s->e.strain);
   setnum(L, "dissipated", s->e.friction);
+  setnum(L, "plastic", s->e.plastic);
+  setnum(L, "viscous", s->e.viscous);
   setnum(L, "boundary_work", s->e.boundary);
+  setnum(L, "thermal_work", s->e.thermal);
   setnum(L, "initial", s->e.initial);
   setnum(L, "total", sim_total(s));
   setnum(L, "residual", sim_residual(s));
@@ -516,7 +519,8 @@ void lsim_open(lua_State *L) {
       {"body", lbody_new}, {"contact", lcontact}, {"every", levery},
       {"output", loutput}, {"step", lstep}, {"run", lrun},
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
-      {"particles", lparticles}, {"stable_dt", lstable_dt}, {NULL, NULL}};
+      {"particles", lparticles}, {"stable_dt", lstable_dt},
+      {"temperature", lsim_temperature}, {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);
   lua_setfield(L, -2, "__index");

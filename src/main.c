@@ -150,9 +150,12 @@ static int cmd_run(int argc, char **argv) {
            scene, s->step, s->t, s->ps.n, s->nbody, now() - w0);
     printf("energy: initial %.6g  kinetic %.6g  strain %.6g  dissipated %.6g  "
            "boundary work %.6g  residual %.3g (%.3g%% of initial)\n",
-           s->e.initial, s->e.kinetic, s->e.strain, s->e.friction,
-           s->e.boundary, sim_residual(s), 100 * sim_residual(s) /
-               (s->e.initial > 0 ? s->e.initial : 1));
+           s->e.initial, s->e.kinetic, s->e.strain, s->e.friction, s->e.boundary,
+           sim_residual(s),
+           100 * sim_residual(s) / (s->e.initial > 0 ? s->e.initial : 1));
+    if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0)
+      printf("        plastic %.6g  viscous %.6g  thermal work %.6g\n",
+             s->e.plastic, s->e.viscous, s->e.thermal);
     if (s->nremoved) printf("%zu particles left the domain and were removed\n", s->nremoved);
     printf("output: %s/ (particles.xmf, %d snapshots, diagnostics.csv)\n",
            ls->outdir, ls->nsnap);

@@ -18,3 +18,35 @@ int material_init(material *m, const mat_model *model, const char *name,
   m->c = sqrt((K + 4.0 * G / 3.0) / rho);
   return 0;
 }
+
+int material_plastic(material *m, const char *name, double rho, double K,
+                     double G, double yield, double hardening) {
+  if (material_init(m, &mat_plastic, name, rho, K, G)) return -1;
+  if (!(yield > 0) || !(hardening >= 0) || !isfinite(yield) ||
+      !isfinite(hardening))
+    return -1;
+  m->yield = yield;
+  m->hardening = hardening;
+  return 0;
+}
+
+int material_viscoelastic(material *m, const char *name, double rho,
+                          double K, double G_inf, int n, const double *G,
+                          const double *tau) {
+  double Gg = G_inf;
+  int k;
+  if (n < 0 || n > MAT_MAXPRONY || !(G_inf >= 0)) return -1;
+  for (k = 0; k < n; k++) {
+    if (!(G[k] > 0) || !(tau[k] > 0) || !isfinite(tau[k])) return -1;
+    Gg += G[k];
+  }
+  /* the glassy modulus sets the wave speed and so the stable step */
+  if (material_init(m, &mat_viscoelastic, name, rho, K, Gg)) return -1;
+  m->G_inf = G_inf;
+  m->nprony = n;
+  for (k = 0; k < n; k++) {
+    m->prony_G[k] = G[k];
+    m->prony_tau[k] = tau[k];
+  }
+  return 0;
+}

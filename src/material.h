@@ -22,12 +22,17 @@
 
 typedef struct material material;
 
+#define MAT_MAXPRONY 8             /* Maxwell elements of one material */
+#define MAT_MAXFIELDS (MAT_MAXPRONY + 2)
+
 /* per-step sums the constitutive phase reports */
 typedef struct mat_sums {
   double strain;   /* stored elastic energy */
   double power;    /* stress power sum V sigma : D after the update */
   double jmin, jmax;
   size_t nbadj;    /* particles with det F <= 0 */
+  double plastic;  /* plastic work of this step */
+  double viscous;  /* viscous dissipation of this step */
 } mat_sums;
 
 typedef struct mat_model {
@@ -49,13 +54,38 @@ struct material {
   double K, G;      /* 3-D bulk and shear moduli */
   double lambda;    /* K - 2G/3 */
   double c;         /* longitudinal wave speed at rest, sqrt((K+4G/3)/rho) */
+  /* thermal expansion (thermal.c): linear coefficient of the 3-D
+  ** material and the temperature at which the seeded shape is stress
+  ** free; alpha = 0 keeps the material out of the thermal phase */
+  double alpha, T_ref;
+  /* elastic-plastic (mat_plastic.c): initial yield stress (von Mises,
+  ** equivalent stress) and linear isotropic hardening modulus */
+  double yield, hardening;
+  /* viscoelastic (mat_viscoelastic.c): long-term shear modulus and the
+  ** Maxwell elements; G above is the glassy G_inf + sum G_i */
+  double G_inf;
+  int nprony;
+  double prony_G[MAT_MAXPRONY], prony_tau[MAT_MAXPRONY];
+  /* per-particle state fields the model registered (indices into the
+  ** particle field table, set by setup) */
+  int field[MAT_MAXFIELDS];
 };
 
 extern const mat_model mat_elastic;
+extern const mat_model mat_plastic;
+extern const mat_model mat_viscoelastic;
 
 /* the elastic constants every model shares; 0 or -1 if out of range */
 int material_init(material *m, const mat_model *model, const char *name,
                   double rho, double K, double G);
+/* J2 plasticity: yield > 0, hardening >= 0; 0 or -1 */
+int material_plastic(material *m, const char *name, double rho, double K,
+                     double G, double yield, double hardening);
+/* generalized Maxwell: G_inf >= 0, n <= MAT_MAXPRONY elements with G > 0
+** and tau > 0, glassy G_inf + sum G > 0; 0 or -1 */
+int material_viscoelastic(material *m, const char *name, double rho,
+                          double K, double G_inf, int n, const double *G,
+                          const double *tau);
 
 /* elastic energy density of a stress state, isotropic K and G */
 static inline double mat_elastic_density(const double *s, double K, double G) {
@@ -73,6 +103,36 @@ static inline double mat_elastic_density(const double *s, double K, double G) {
 }
 
 /*
+** The incremental rotation of particle i over the step: Hughes-Winget,
+** R = (I - W dt/2)^-1 (I + W dt/2), a rotation by an angle theta with
+** cos = (1 - a^2)/(1 + a^2), sin = 2a/(1 + a^2), a = dt W_yx / 2 ...
+** written out for 2-D so it stays exactly orthogonal.  Models with
+** stress-like state besides the stress rotate it with the same (cs, sn).
+*/
+static inline void mat_rotation(const particles *ps, size_t i, double dt,
+                                double *cs, double *sn) {
+#if DIM == 2
+  double a = 0.25 * dt * (ps->L[2][i] - ps->L[1][i]);
+  double c2 = 1.0 + a * a;
+  *cs = (1.0 - a * a) / c2;
+  *sn = 2.0 * a / c2;
+#else
+#error "mat_rotation: 3-D not written yet"
+#endif
+}
+
+/* rotate the in-plane part of a symmetric tensor in stress order */
+static inline void mat_rotate(double cs, double sn, double *s) {
+#if DIM == 2
+  double sxx = s[S_XX], syy = s[S_YY], sxy = s[S_XY];
+  double cc = cs * cs, ssn = sn * sn, b = 2.0 * cs * sn * sxy;
+  s[S_XX] = cc * sxx + ssn * syy - b;
+  s[S_YY] = ssn * sxx + cc * syy + b;
+  s[S_XY] = cs * sn * (sxx - syy) + (cc - ssn) * sxy;
+#endif
+}
+
+/*
 ** The kinematic part every model shares, for particle i: D (symmetric,
 ** stored as NSTRESS components in stress order, zz = 0 in plane strain),
 ** the incremental rotation applied to the stress in s[], and F <- (I +
@@ -83,27 +143,15 @@ static inline double mat_kinematics(particles *ps, size_t i, double dt,
 #if DIM == 2
   double L00 = ps->L[0][i], L01 = ps->L[1][i];
   double L10 = ps->L[2][i], L11 = ps->L[3][i];
-  double w = 0.5 * dt * (L10 - L01); /* dt * W_yx */
   double F00 = ps->F[0][i], F01 = ps->F[1][i];
   double F10 = ps->F[2][i], F11 = ps->F[3][i];
-  double a, b, c2, sxx, syy, sxy, cs, sn, cc, ssn;
+  double cs, sn;
   D[S_XX] = L00;
   D[S_YY] = L11;
   D[S_XY] = 0.5 * (L01 + L10);
   D[S_ZZ] = 0.0;
-  /* Hughes-Winget: R = (I - W dt/2)^-1 (I + W dt/2) is a rotation by an
-  ** angle theta with cos = (1 - a^2)/(1 + a^2), sin = 2a/(1 + a^2), a =
-  ** w/2 ... written out for 2-D so it stays exactly orthogonal */
-  a = 0.5 * w;
-  c2 = 1.0 + a * a;
-  cs = (1.0 - a * a) / c2;
-  sn = 2.0 * a / c2;
-  sxx = s[S_XX]; syy = s[S_YY]; sxy = s[S_XY];
-  cc = cs * cs; ssn = sn * sn;
-  b = 2.0 * cs * sn * sxy;
-  s[S_XX] = cc * sxx + ssn * syy - b;
-  s[S_YY] = ssn * sxx + cc * syy + b;
-  s[S_XY] = cs * sn * (sxx - syy) + (cc - ssn) * sxy;
+  mat_rotation(ps, i, dt, &cs, &sn);
+  mat_rotate(cs, sn, s);
   ps->F[0][i] = F00 + dt * (L00 * F00 + L01 * F10);
   ps->F[1][i] = F01 + dt * (L00 * F01 + L01 * F11);
   ps->F[2][i] = F10 + dt * (L10 * F00 + L11 * F10);
@@ -111,6 +159,23 @@ static inline double mat_kinematics(particles *ps, size_t i, double dt,
   return ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
 #else
 #error "mat_kinematics: 3-D not written yet"
+#endif
+}
+
+/* split a stress into its mean p and deviator d (all NSTRESS components,
+** zz included); returns |d|^2 with the shear counted twice (d : d) */
+static inline double mat_deviator(const double *s, double *p, double *d) {
+#if DIM == 2
+  double m = (s[S_XX] + s[S_YY] + s[S_ZZ]) / 3.0;
+  d[S_XX] = s[S_XX] - m;
+  d[S_YY] = s[S_YY] - m;
+  d[S_ZZ] = s[S_ZZ] - m;
+  d[S_XY] = s[S_XY];
+  *p = m;
+  return d[S_XX] * d[S_XX] + d[S_YY] * d[S_YY] + d[S_ZZ] * d[S_ZZ] +
+         2.0 * d[S_XY] * d[S_XY];
+#else
+#error "mat_deviator: 3-D not written yet"
 #endif
 }
 

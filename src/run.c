@@ -43,8 +43,9 @@ static int mkdirs(const char *path, char *err, size_t errlen) {
 }
 
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
-    "dissipated", "boundary_work", "total", "residual", "px", "py", "angmom",
-    "jmin", "jmax", "particles", "debonded"};
+    "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
+    "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
+    "debonded"};
 #define NCOLS (int)(sizeof cols / sizeof cols[0])
 
 static void csv_row(lua_State *L, lsim *ls) {
@@ -53,11 +54,12 @@ static void csv_row(lua_State *L, lsim *ls) {
   char err[256];
   v[0] = (double)s->step; v[1] = s->t; v[2] = s->dt;
   v[3] = s->e.kinetic; v[4] = s->e.strain; v[5] = s->e.friction;
-  v[6] = s->e.boundary; v[7] = tot;
-  v[8] = sim_residual(s);
-  v[9] = s->e.mom[0]; v[10] = s->e.mom[1]; v[11] = s->e.angmom;
-  v[12] = s->e.jmin; v[13] = s->e.jmax; v[14] = (double)s->ps.n;
-  v[15] = (double)s->ncut_total;
+  v[6] = s->e.plastic; v[7] = s->e.viscous;
+  v[8] = s->e.boundary; v[9] = s->e.thermal; v[10] = tot;
+  v[11] = sim_residual(s);
+  v[12] = s->e.mom[0]; v[13] = s->e.mom[1]; v[14] = s->e.angmom;
+  v[15] = s->e.jmin; v[16] = s->e.jmax; v[17] = (double)s->ps.n;
+  v[18] = (double)s->ncut_total;
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 
@@ -243,6 +245,8 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     s->t_stop = ls->csv_open && ls->out_every > 0 && ls->out_next < t_end
                     ? ls->out_next : t_end;
     if (ls->drives || ls->sidefns) drives(L, simidx, ls);
+    /* the temperature at the end of the coming step */
+    if (ls->tempfn) s->temp = lsim_temperature_at(L, simidx, s->t + sim_next_dt(s));
     if (sim_step(s)) luaL_error(L, "%s", s->err);
     k++;
     if (ls->csv_open && ls->csv_every > 0 && s->step % ls->csv_every == 0) csv_row(L, ls);

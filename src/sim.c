@@ -8,6 +8,7 @@
 #include <string.h>
 #include "shape.h"
 #include "sim.h"
+#include "thermal.h"
 
 int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
              const int periodic[DIM], int shape, int ppc) {
@@ -26,6 +27,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->sort_every = 20;
   s->ppc = ppc;
   s->lp = 0.5 / ppc;
+  s->ftemp = -1;
   particles_init(&s->ps);
   if (grid_init(&s->g, lo, hi, h, periodic, shape_pad(shape))) {
     snprintf(s->err, sizeof s->err, "out of memory for the grid");
@@ -214,20 +216,34 @@ void sim_measure(sim *s) {
   s->vmax = sqrt(v2max);
 }
 
+double sim_next_dt(sim *s) {
+  double dt;
+  if (!s->started) sim_measure(s);
+  dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  /* land on the end of a run rather than overshoot it; a sliver shorter
+  ** than a thousandth of a step is absorbed by the step before */
+  if (s->t_stop > s->t && s->t + dt * 1.001 > s->t_stop) dt = s->t_stop - s->t;
+  return dt;
+}
+
 double sim_total(const sim *s) {
   return s->e.kinetic + s->e.strain + s->e.lag;
 }
 
 double sim_residual(const sim *s) {
-  return s->e.initial + s->e.boundary - s->e.friction - sim_total(s);
+  const sim_energy *e = &s->e;
+  return e->initial + e->boundary + e->thermal - e->friction - e->plastic -
+         e->viscous - sim_total(s);
 }
 
 int constitutive(sim *s) {
-  mat_sums sum = {0, 0, 1e300, -1e300, 0};
+  mat_sums sum = {0, 0, 1e300, -1e300, 0, 0, 0};
   int k;
   for (k = 0; k < s->nmat; k++)
     s->mats[k].model->update(&s->mats[k], &s->ps, s->bmat, k, s->dt, &sum);
   s->e.strain = sum.strain;
+  s->e.plastic += sum.plastic;
+  s->e.viscous += sum.viscous;
   s->e.lag = -0.5 * s->dt * sum.power;
   if (sum.jmin <= sum.jmax) { s->e.jmin = sum.jmin; s->e.jmax = sum.jmax; }
   s->e.nbadj = sum.nbadj;
@@ -267,6 +283,7 @@ void sim_begin(sim *s) {
   for (i = 0; i < ps->n; i++)
     if (ps->m[i] < mmin) mmin = ps->m[i];
   s->mcut = ps->n ? s->mcut_rel * mmin : 0;
+  if (s->ftemp >= 0) thermal_prestress(s);
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain;
   s->e.jmin = s->e.jmax = 1;
@@ -279,10 +296,7 @@ int sim_step(sim *s) {
     sim_begin(s);
     s->started = 1;
   }
-  s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
-  /* land on the end of a run rather than overshoot it; a sliver shorter
-  ** than a thousandth of a step is absorbed by the step before */
-  if (s->t_stop > s->t && s->t + s->dt * 1.001 > s->t_stop) s->dt = s->t_stop - s->t;
+  s->dt = sim_next_dt(s);
   grid_reset(&s->g, musl);
   if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
@@ -310,6 +324,7 @@ int sim_step(sim *s) {
     solve_remap(s);
     g2p_remap(s);
   }
+  if (s->temp_on) thermal(s);
   if (constitutive(s)) return -1;
   s->t += s->dt;
   s->step++;

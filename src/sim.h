@@ -48,6 +48,10 @@ typedef struct sim_energy {
   double lag;        /* -dt/2 sum V sigma:D: see sim_total */
   double friction;   /* work dissipated by friction (walls + contacts) */
   double boundary;   /* work done on the material by walls / driven bodies */
+  double plastic;    /* plastic work (mat_plastic.c) */
+  double viscous;    /* viscous dissipation (mat_viscoelastic.c) */
+  double thermal;    /* work of the thermal strain on the stress (thermal.c):
+                     ** what heating or cooling adds to the strain energy */
   double initial;    /* kinetic + strain before the first step */
   double mom[DIM];
   double angmom;     /* about the origin (2-D: z component) */
@@ -91,6 +95,9 @@ typedef struct sim {
   double lp;         /* particle half size in cells (1 / (2 ppc)) */
   int ppc;
   sim_energy e;
+  int ftemp;         /* particle field "temperature", -1 if no scene uses it */
+  int temp_on;       /* a uniform temperature is imposed (thermal.c) */
+  double temp;       /* ... its value at the end of the next step */
   double vmax;       /* fastest particle of the last step */
   size_t nout;       /* particles outside the domain after the last move */
   double mcut_rel;   /* mcut as a fraction of the lightest particle */
@@ -124,14 +131,16 @@ void sim_begin(sim *s);
 int sim_step(sim *s);
 /* the step the CFL rule gives now */
 double sim_stable_dt(const sim *s);
+/* the step the next sim_step will take (fixed or CFL) */
+double sim_next_dt(sim *s);
 /* total energy, kinetic + strain + lag.  Velocities and stresses are a
 ** half step apart in the explicit update (as in symplectic Euler), so
 ** kinetic + strain oscillates by O(omega dt) even when nothing is lost;
 ** the lag term -dt/2 sum V sigma:D removes that first-order error (it
 ** is exact for a linear oscillator) */
 double sim_total(const sim *s);
-/* the budget's residual: initial + boundary work - friction - total;
-** zero for a perfect accounting */
+/* energy budget residual: initial + boundary + thermal - friction -
+** plastic - viscous - total; zero up to the error of the step */
 double sim_residual(const sim *s);
 /* recompute kinetic energy, momenta and strain energy from particles */
 void sim_measure(sim *s);
@@ -152,5 +161,6 @@ void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void g2p(sim *s);              /* g2p.c: velocities, positions, grad v */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */
 int constitutive(sim *s);      /* sim.c: each material's update */
+void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */
 
 #endif

@@ -4,10 +4,11 @@
 local text = [[
 sim:step(n)          advance n steps (default 1)
 sim:run(t)           advance to time t (default: the scene's t_end)
-sim:energy()         kinetic, strain, dissipated, boundary_work, total, residual, px, py, angmom
+sim:energy()         kinetic, strain, dissipated, plastic, viscous, boundary_work, thermal_work, total, residual, px, py, angmom
 sim:bodies()         the bodies; b:diag(), b:centroid(), b:velocity(), b:omega(), b:mass()
 sim:particles(name)  copy of a particle field (sim:particles() lists them)
 sim:snapshot(path)   write an HDF5 snapshot now
+sim:temperature(T)   impose a uniform temperature (a number or function(t)); sim:temperature() reads it
 sim.t sim.dt sim.steps sim.n   time, step size, step count, particle count
 sim.flip = f  sim.cfl = c  sim.dt = d  sim.friction = mu   change settings between steps
 show(v)              print a value as the prompt does (tables sorted, one level)

@@ -1,0 +1,66 @@
+/*
+** lua_thermal.c - sim:temperature(T) or sim:temperature(function(t)
+** return T end): impose a uniform temperature; sim:temperature() reads
+** it (nil if none is imposed).  A function is called
+** between steps, once per step, with the time at the end of the coming
+** step (run.c); its value is the temperature every particle has when the
+** step ends, so each step's change is T(t + dt) - T(t).  A number holds
+** from now on.  Before the first step either one also sets the initial
+** temperature (see thermal.h for T_ref and the stress that follows).
+*/
+#include <math.h>
+#include <stdio.h>
+#include "lsim.h"
+#include "thermal.h"
+
+/* the uniform temperature a function gives at time t; checked */
+double lsim_temperature_at(lua_State *L, int simidx, double t) {
+  double T;
+  int isnum;
+  lsim_uv(L, simidx, "temperature");
+  lua_pushnumber(L, t);
+  lua_call(L, 1, 1);
+  T = lua_tonumberx(L, -1, &isnum);
+  if (!isnum || !isfinite(T)) {
+    char at[32];
+    snprintf(at, sizeof at, "%g", t);
+    luaL_error(L, "temperature function returned %s at t = %s; it must "
+                  "return a finite number", isnum ? "a non-finite number"
+                                                  : luaL_typename(L, -1), at);
+  }
+  lua_pop(L, 1);
+  return T;
+}
+
+int lsim_temperature(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  sim *s = &ls->s;
+  double T;
+  if (lua_isnoneornil(L, 2)) {
+    if (s->temp_on) lua_pushnumber(L, s->temp);
+    else lua_pushnil(L);
+    return 1;
+  }
+  lua_settop(L, 2);
+  lua_getiuservalue(L, 1, 1);
+  if (lua_isfunction(L, 2)) {
+    lua_pushvalue(L, 2);
+    lua_setfield(L, -2, "temperature");
+    lua_pop(L, 1);
+    ls->tempfn = 1;
+    T = lsim_temperature_at(L, 1, s->t);
+  } else if (lua_type(L, 2) == LUA_TNUMBER) {
+    lua_pushnil(L);
+    lua_setfield(L, -2, "temperature");
+    lua_pop(L, 1);
+    ls->tempfn = 0;
+    T = lua_tonumber(L, 2);
+    if (!isfinite(T))
+      luaL_error(L, "temperature: the temperature must be a finite number");
+  } else
+    return luaL_error(L, "temperature: give a number or a function(t) "
+                         "returning the temperature (got %s)",
+                      luaL_typename(L, 2));
+  if (thermal_uniform(s, T)) luaL_error(L, "temperature: out of memory");
+  return 0;
+}

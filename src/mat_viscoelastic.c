@@ -1,0 +1,169 @@
+/*
+** mat_viscoelastic.c - generalized Maxwell solid (Prony series in shear)
+** for the binder:
+**   G(t) = G_inf + sum_k G_k exp(-t / tau_k),   elastic bulk modulus K.
+** The stress is p I + s_inf + sum_k s_k: the pressure and the long-term
+** deviator s_inf grow hypoelastically (p' = K tr D, s_inf' = 2 G_inf d),
+** and each element follows s_k' = 2 G_k d - s_k / tau_k, d the deviator
+** of D (in plane strain d_zz = -tr D / 3).  Only the s_k are stored; s_inf
+** is what the total stress leaves over.
+**
+** Over a step the deviatoric rate d is taken constant, so each element
+** integrates exactly:
+**   s_k <- e s_k + 2 G_k tau_k (1 - e) d,   e = exp(-dt / tau_k)
+** which stays stable and accurate for dt >> tau_k (the element simply
+** sits at its steady state 2 G_k tau_k d).  The element stresses rotate
+** with the same objective rotation as the stress, before the update.
+**
+** Dissipation of element k over the step is the exact integral of
+** s_k : s_k / (2 G_k tau_k) along that same exponential path,
+** s(t) = x E + 2 G tau d (1 - E), E = exp(-t / tau), x the start value:
+**   int |s|^2 dt / (2 G tau) = |x|^2 tau (1 - e^2) / (4 G tau)
+**                            + x:d tau (1 - e)^2 + |d|^2 2 G tau^2 f(dt/tau)
+** with f(u) = u - 2 (1 - e^-u) + (1 - e^-2u) / 2 = u^3/3 - u^4/4 + ...,
+** summed as its series for small u where the closed form cancels.
+** It is kept per unit reference volume in "viscous_work" (like the
+** stored energy: the small-strain convention) and summed into the energy
+** budget.  Stored energy: p^2/(2K) + |s_inf|^2/(4 G_inf) +
+** sum |s_k|^2/(4 G_k).
+**
+** Element stresses are deviatoric, so each is stored as xx, yy, xy (zz
+** = -(xx + yy)) in the fields "maxwell1" .. "maxwellN", one per element
+** the material has; materials share them by name.
+*/
+#include <math.h>
+#include <stdio.h>
+#include "material.h"
+
+#define F_VW MAT_MAXPRONY   /* field slot of viscous_work */
+
+static const char *const comp[] = {"xx", "yy", "xy"};
+
+static int setup(material *m, particles *ps) {
+  int k, c;
+  for (k = 0; k < m->nprony; k++) {
+    char name[16];
+    int f;
+    snprintf(name, sizeof name, "maxwell%d", k + 1);
+    f = particles_add_field(ps, name, 3, PF_DOUBLE, "M/(L T^2)",
+                            PF_OUTPUT | PF_RESTART);
+    if (f < 0) return -1;
+    for (c = 0; c < 3; c++) ps->fields[f].comp_names[c] = comp[c];
+    m->field[k] = f;
+  }
+  m->field[F_VW] = particles_add_field(ps, "viscous_work", 1, PF_DOUBLE,
+                                       "M/(L T^2)", PF_OUTPUT | PF_RESTART);
+  return m->field[F_VW] < 0 ? -1 : 0;
+}
+
+/* a : b of two deviators in stress order (zz included, shear twice) */
+static inline double ddot(const double *a, const double *b) {
+  return a[S_XX] * b[S_XX] + a[S_YY] * b[S_YY] + a[S_ZZ] * b[S_ZZ] +
+         2.0 * a[S_XY] * b[S_XY];
+}
+
+static void update(const material *m, particles *ps, const int32_t *bmat,
+                   int32_t id, double dt, mat_sums *sum) {
+  const int n = m->nprony;
+  const double K = m->K, g2 = 2.0 * m->G_inf;
+  double e[MAT_MAXPRONY], B[MAT_MAXPRONY], k1[MAT_MAXPRONY], k2[MAT_MAXPRONY],
+      k3[MAT_MAXPRONY];
+  double *a[MAT_MAXPRONY][3];
+  double *vw = particles_comp(ps, m->field[F_VW], 0);
+  double s[NSTRESS], D[NSTRESS], d[NSTRESS], strain = 0, power = 0, visc = 0;
+  size_t i;
+  int k, c;
+  /* per-step constants: no exp() per particle */
+  for (k = 0; k < n; k++) {
+    double tau = m->prony_tau[k], G = m->prony_G[k], u = dt / tau;
+    double om = -expm1(-u), f;
+    if (u < 1e-3) /* the closed form loses (1e-16 / u) of the work here */
+      f = u * u * u * (1.0 / 3 + u * (-1.0 / 4 + u * (7.0 / 60 - u / 24)));
+    else
+      f = u - 2.0 * om + 0.5 * om * (2.0 - om);
+    e[k] = 1.0 - om;
+    B[k] = 2.0 * G * tau * om;      /* approach to the steady state 2 G tau d */
+    k1[k] = om * (2.0 - om) / (4.0 * G);      /* tau (1 - e^2) / (4 G tau) */
+    k2[k] = tau * om * om;
+    k3[k] = 2.0 * G * tau * tau * f;
+    for (c = 0; c < 3; c++) a[k][c] = particles_comp(ps, m->field[k], c);
+  }
+  for (i = 0; i < ps->n; i++) {
+    double J, tr, cs, sn, dd, w = 0, en;
+    if (bmat[ps->body[i]] != id) continue;
+    mat_get(ps, i, s);
+    J = mat_kinematics(ps, i, dt, s, D);
+    mat_rotation(ps, i, dt, &cs, &sn);
+#if DIM == 2
+    tr = D[S_XX] + D[S_YY];
+    d[S_XX] = D[S_XX] - tr / 3.0;
+    d[S_YY] = D[S_YY] - tr / 3.0;
+    d[S_ZZ] = -tr / 3.0;
+    d[S_XY] = D[S_XY];
+    dd = ddot(d, d);
+    /* pressure and long-term part */
+    for (c = 0; c < NSTRESS; c++) s[c] += g2 * dt * d[c];
+    s[S_XX] += K * tr * dt; s[S_YY] += K * tr * dt; s[S_ZZ] += K * tr * dt;
+    en = 0;
+    for (k = 0; k < n; k++) {
+      double x[NSTRESS], y[NSTRESS];
+      x[S_XX] = a[k][0][i]; x[S_YY] = a[k][1][i]; x[S_XY] = a[k][2][i];
+      x[S_ZZ] = 0;
+      mat_rotate(cs, sn, x);
+      x[S_ZZ] = -(x[S_XX] + x[S_YY]);
+      for (c = 0; c < NSTRESS; c++) {
+        y[c] = e[k] * x[c] + B[k] * d[c];
+        s[c] += y[c] - x[c];
+      }
+      w += k1[k] * ddot(x, x) + k2[k] * ddot(x, d) + k3[k] * dd;
+      en += ddot(y, y) / (4.0 * m->prony_G[k]);
+      a[k][0][i] = y[S_XX]; a[k][1][i] = y[S_YY]; a[k][2][i] = y[S_XY];
+    }
+#endif
+    vw[i] += w;
+    visc += ps->vol0[i] * w;
+    mat_put(ps, i, s);
+    mat_sum_j(sum, J);
+    {
+      double p, dv[NSTRESS], r;
+      (void)mat_deviator(s, &p, dv);
+      en += p * p / (2.0 * K);
+      if (m->G_inf > 0) {
+        for (k = 0; k < n; k++) {
+          dv[S_XX] -= a[k][0][i]; dv[S_YY] -= a[k][1][i];
+          dv[S_XY] -= a[k][2][i];
+          dv[S_ZZ] += a[k][0][i] + a[k][1][i];
+        }
+        r = ddot(dv, dv);
+        en += r / (4.0 * m->G_inf);
+      }
+    }
+    strain += ps->vol0[i] * en;
+    power += J * ps->vol0[i] * mat_power(s, D);
+  }
+  sum->strain += strain;
+  sum->power += power;
+  sum->viscous += visc;
+}
+
+static double energy(const material *m, const particles *ps, size_t i) {
+  double s[NSTRESS], dv[NSTRESS], p, en = 0;
+  int k;
+  mat_get(ps, i, s);
+  (void)mat_deviator(s, &p, dv);
+  for (k = 0; k < m->nprony; k++) {
+    const double *xx = particles_comp(ps, m->field[k], 0);
+    const double *yy = particles_comp(ps, m->field[k], 1);
+    const double *xy = particles_comp(ps, m->field[k], 2);
+    double x[NSTRESS];
+    x[S_XX] = xx[i]; x[S_YY] = yy[i]; x[S_XY] = xy[i];
+    x[S_ZZ] = -(xx[i] + yy[i]);
+    en += ddot(x, x) / (4.0 * m->prony_G[k]);
+    for (int c = 0; c < NSTRESS; c++) dv[c] -= x[c];
+  }
+  en += p * p / (2.0 * m->K);
+  if (m->G_inf > 0) en += ddot(dv, dv) / (4.0 * m->G_inf);
+  return ps->vol0[i] * en;
+}
+
+const mat_model mat_viscoelastic = {"viscoelastic", setup, update, energy};

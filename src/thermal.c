@@ -1,0 +1,78 @@
+/*
+** thermal.c - the thermal phase: temperature changes become hydrostatic
+** stress increments (see thermal.h for the plane-strain convention).
+**
+** Energy: the strain energy changes by the work of the stress on the
+** thermal strain, -V alpha dT tr(sigma) (3-D trace), taken at the mean
+** stress of the increment, which is exact for the p^2 / (2K) part every
+** model stores.  It is summed as e.thermal, an input to the budget
+** like boundary work.
+*/
+#include "thermal.h"
+
+int thermal_enable(sim *s) {
+  if (s->ftemp >= 0) return 0;
+  s->ftemp = particles_add_field(&s->ps, "temperature", 1, PF_DOUBLE, "T",
+                                 PF_OUTPUT | PF_RESTART);
+  if (s->ftemp < 0) return -1;
+  thermal_seed(s, 0, s->ps.n, NULL);
+  return 0;
+}
+
+void thermal_seed(sim *s, size_t from, size_t to, const double *T0) {
+  particles *ps = &s->ps;
+  double *T;
+  size_t i;
+  if (s->ftemp < 0) return;
+  T = particles_comp(ps, s->ftemp, 0);
+  for (i = from; i < to; i++) {
+    int32_t mi = s->bmat[ps->body[i]];
+    T[i] = T0 ? *T0 : s->temp_on ? s->temp : mi >= 0 ? s->mats[mi].T_ref : 0;
+  }
+}
+
+int thermal_uniform(sim *s, double T) {
+  if (thermal_enable(s)) return -1;
+  s->temp_on = 1;
+  s->temp = T;
+  if (!s->started) thermal_seed(s, 0, s->ps.n, &T);
+  return 0;
+}
+
+/* add -3 K alpha dT to the normal stresses of particle i; the work of
+** the increment at its mean stress */
+static double heat(const material *m, particles *ps, size_t i, double dT) {
+  double ds = -3.0 * m->K * m->alpha * dT;
+  double tr = ps->s[S_XX][i] + ps->s[S_YY][i] + ps->s[S_ZZ][i];
+  ps->s[S_XX][i] += ds;
+  ps->s[S_YY][i] += ds;
+  ps->s[S_ZZ][i] += ds;
+  return -ps->vol0[i] * m->alpha * dT * (tr + 1.5 * ds);
+}
+
+void thermal_prestress(sim *s) {
+  particles *ps = &s->ps;
+  const double *T = particles_comp(ps, s->ftemp, 0);
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    int32_t mi = s->bmat[ps->body[i]];
+    if (mi < 0 || s->mats[mi].alpha == 0 || T[i] == s->mats[mi].T_ref) continue;
+    heat(&s->mats[mi], ps, i, T[i] - s->mats[mi].T_ref);
+  }
+}
+
+void thermal(sim *s) {
+  particles *ps = &s->ps;
+  double *T = particles_comp(ps, s->ftemp, 0);
+  const double Tn = s->temp;
+  double work = 0;
+  size_t i;
+  for (i = 0; i < ps->n; i++) {
+    int32_t mi = s->bmat[ps->body[i]];
+    double dT = Tn - T[i];
+    T[i] = Tn;
+    if (mi < 0 || s->mats[mi].alpha == 0 || dT == 0) continue;
+    work += heat(&s->mats[mi], ps, i, dT);
+  }
+  s->e.thermal += work;
+}

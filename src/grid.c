@@ -55,8 +55,8 @@ int grid_init(grid *g, const double lo[DIM], const double hi[DIM], double h,
 static void slots_free(grid *g) {
   int d;
   free(g->snext); free(g->sfield); free(g->snode); free(g->sm);
-  free(g->sext); free(g->sb); free(g->scut);
-  for (d = 0; d < GRID_NSIG; d++) free(g->ss[d]);
+  free(g->sext); free(g->sb); free(g->scut); free(g->sbonded);
+  for (d = 0; d < DIM; d++) free(g->sv[d]);
   for (d = 0; d < DIM; d++) {
     free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
     free(g->sg[d]); free(g->sn[d]);
@@ -103,7 +103,8 @@ static int slots_grow(grid *g) {
   GROW(g->snode, int32_t, cap); GROW(g->sm, double, cap);
   GROW(g->sext, double, cap);
   GROW(g->sb, double, cap); GROW(g->scut, double, cap);
-  for (d = 0; d < GRID_NSIG; d++) GROW(g->ss[d], double, cap);
+  GROW(g->sbonded, unsigned char, cap);
+  for (d = 0; d < DIM; d++) GROW(g->sv[d], double, cap);
   for (d = 0; d < DIM; d++) {
     GROW(g->sp[d], double, cap); GROW(g->sf[d], double, cap);
     GROW(g->sq[d], double, cap); GROW(g->sg[d], double, cap);
@@ -125,7 +126,8 @@ static int32_t slot_new(grid *g, int32_t node, int32_t field) {
   g->sm[s] = 0;
   g->sext[s] = -1e300;
   g->sb[s] = g->scut[s] = 0;
-  for (d = 0; d < GRID_NSIG; d++) g->ss[d][s] = 0;
+  g->sbonded[s] = 0;
+  for (d = 0; d < DIM; d++) g->sv[d][s] = 0;
   for (d = 0; d < DIM; d++) {
     g->sp[d][s] = g->sf[d][s] = g->sq[d][s] = g->sg[d][s] = 0;
     g->sn[d][s] = 0;

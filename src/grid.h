@@ -18,13 +18,6 @@
 #include <stdint.h>
 #include "dim.h"
 
-/* stress components a slot carries for bonds: the in-plane ones */
-#if DIM == 2
-#define GRID_NSIG 3
-#else
-#define GRID_NSIG 6
-#endif
-
 typedef struct grid {
   int cells[DIM];      /* cells per dimension */
   int periodic[DIM];
@@ -46,9 +39,11 @@ typedef struct grid {
   double *sn[DIM];     /* outward unit normal of the field's body */
   double *sext;        /* reach of the field's material along its normal */
   /* bonds (bond.c), filled only in scenes with bonds: the field's
-  ** mass-weighted bond strength and stress (in-plane xx, yy, xy), and the
-  ** strength a debonding removed this step */
-  double *sb, *ss[GRID_NSIG], *scut;
+  ** mass-weighted bond strength, its volume gradient sum_p V_p grad S_ip
+  ** (whose length is the interface area the node stands for), and the
+  ** strength a debonding removed */
+  double *sb, *sv[DIM], *scut;
+  unsigned char *sbonded; /* bonded this step: moves with the node */
   /* list of shared nodes */
   size_t nshared, sharedcap;
   int32_t *shared;

@@ -322,6 +322,7 @@ int sim_step(sim *s) {
     ** measurably creates energy at impacts */
     p2g_momentum(s);
     solve_remap(s);
+    if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
   }
   if (s->temp_on) thermal(s);

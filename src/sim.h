@@ -157,6 +157,8 @@ void reach(sim *s);            /* reach.c: surfaces, for the gap check */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
 void bond_gather(sim *s);      /* bond.c: strength, stress at shared slots */
 void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
+void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
+                                  remapped velocity (MUSL) */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void g2p(sim *s);              /* g2p.c: velocities, positions, grad v */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */

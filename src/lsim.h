@@ -75,6 +75,9 @@ lshape *lshape_check(lua_State *L, int idx);
 /* is (x) inside the shape at idx?  SH_FUNC calls the Lua function */
 int lshape_inside(lua_State *L, int idx, const lshape *sh, const double *x);
 double lshape_area(const lshape *sh);   /* < 0 if not known */
+/* lua_render.c: sim:render{...} and mvmpm.plot{...} */
+int lrender_sim(lua_State *L);
+void lrender_open(lua_State *L, int modidx);
 /* run.c */
 int run_until(lua_State *L, int simidx, double t_end, long max_steps);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);

@@ -502,7 +502,8 @@ void lsim_open(lua_State *L) {
       {"body", lbody_new}, {"contact", lcontact}, {"every", levery},
       {"output", loutput}, {"step", lstep}, {"run", lrun},
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
-      {"particles", lparticles}, {"stable_dt", lstable_dt}, {NULL, NULL}};
+      {"particles", lparticles}, {"stable_dt", lstable_dt},
+      {"render", lrender_sim}, {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);
   lua_setfield(L, -2, "__index");

@@ -15,12 +15,13 @@
 
 /* the list of keys, for messages: derived ones, then each field with its
 ** components */
-static void keylist(const particles *ps, char *buf, size_t n) {
+static void keylist(const particles *ps, unsigned need, char *buf, size_t n) {
   size_t len;
   int f, c;
-  snprintf(buf, n, "body, pressure, sdiff, speed");
+  snprintf(buf, n, "pressure, sdiff, speed");
   for (f = 0; f < ps->nfields; f++) {
     const pfield *pf = &ps->fields[f];
+    if ((pf->flags & need) != need) continue;
     len = strlen(buf);
     if (len + 40 >= n) break;
     snprintf(buf + len, n - len, ", %s", pf->name);
@@ -52,14 +53,20 @@ static int component(const pfield *pf, const char *comp) {
   return -1;
 }
 
-int render_values(const particles *ps, const char *by, double *out,
-                  char *err, size_t errlen) {
+/* field by name, if it has the flags */
+static int find(const particles *ps, const char *name, unsigned need) {
+  int f = particles_find(ps, name);
+  return f >= 0 && (ps->fields[f].flags & need) == need ? f : -1;
+}
+
+int render_values(const particles *ps, const char *by, unsigned need,
+                  double *out, char *err, size_t errlen) {
   char name[64], keys[1536];
   const char *dot;
   int f, c = 0;
   size_t i;
   if (!by) by = "body";
-  f = particles_find(ps, by);
+  f = find(ps, by, need);
   if (f < 0) {
     if (strcmp(by, "pressure") == 0) {
       /* s_zz is the out-of-plane stress in 2-D (plane strain) */
@@ -87,16 +94,16 @@ int render_values(const particles *ps, const char *by, double *out,
   if (f < 0 && (dot = strrchr(by, '.')) && (size_t)(dot - by) < sizeof name) {
     memcpy(name, by, dot - by);
     name[dot - by] = 0;
-    f = particles_find(ps, name);
+    f = find(ps, name, need);
     if (f >= 0 && (ps->fields[f].ncomp == 1 ||
                    (c = component(&ps->fields[f], dot + 1)) < 0)) {
-      keylist(ps, keys, sizeof keys);
+      keylist(ps, need, keys, sizeof keys);
       snprintf(err, errlen, "'%s': field '%s' has no component '%s' (keys: %s)",
                by, name, dot + 1, keys);
       return -1;
     }
   } else if (f >= 0 && ps->fields[f].ncomp > 1) {
-    keylist(ps, keys, sizeof keys);
+    keylist(ps, need, keys, sizeof keys);
     snprintf(err, errlen, "'%s' has %d components: name one, e.g. '%s.%s' "
              "(keys: %s)", by, ps->fields[f].ncomp, by,
              ps->fields[f].comp_names[0] ? ps->fields[f].comp_names[0] : "1",
@@ -104,7 +111,7 @@ int render_values(const particles *ps, const char *by, double *out,
     return -1;
   }
   if (f < 0) {
-    keylist(ps, keys, sizeof keys);
+    keylist(ps, need, keys, sizeof keys);
     snprintf(err, errlen, "no particle field or derived quantity '%s' "
              "(keys: %s)", by, keys);
     return -1;
@@ -225,14 +232,14 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
              o->range[1]);
     return -1;
   }
-  kind = render_values(ps, o->by, NULL, err, errlen);
+  kind = render_values(ps, o->by, o->need, NULL, err, errlen);
   if (kind < 0) return -1;
   v = malloc((ps->n ? ps->n : 1) * sizeof *v);
   if (!v) {
     snprintf(err, errlen, "out of memory for %zu particles", ps->n);
     return -1;
   }
-  render_values(ps, o->by, v, err, errlen);
+  render_values(ps, o->by, o->need, v, err, errlen);
 
   /* layout: margins, title line, domain, then the panel on the right */
   s = o->width / 400;
@@ -249,7 +256,7 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
       w = canvas_textw(lab[k], s);
       if (w > labw) labw = w;
     }
-    panel = 14 * s + 14 * s + 4 * s + labw;        /* gap, bar, tick, labels */
+    panel = 14 * s + 14 * s + 7 * s + labw;        /* gap, bar, tick, labels */
     k = canvas_textw(o->by ? o->by : "body", s);  /* key over the bar */
     if (14 * s + k > panel) panel = 14 * s + k;
   } else {
@@ -334,7 +341,7 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
       double f = (ticks[k] - L.vlo) / (L.vhi - L.vlo);
       int ty = L.by1 - 1 - (int)floor(f * (bh - 1) + 0.5);
       canvas_rect(c, L.bx1 + 1, ty - s / 2, L.bx1 + 1 + 3 * s, ty - s / 2 + s, INK);
-      canvas_text(c, L.bx1 + 1 + 4 * s, ty, lab[k], s, INK, CV_LEFT,
+      canvas_text(c, L.bx1 + 1 + 6 * s, ty, lab[k], s, INK, CV_LEFT,
                   CV_MIDDLE, 0);
     }
   } else {

@@ -46,6 +46,9 @@ typedef struct render_opts {
   double lo[2], hi[2];       /* the window in world coordinates */
   const char *const *names;  /* names of bodies 0.., or NULL */
   int nnames;
+  unsigned need;             /* fields without all these pfield flags
+                                count as absent: a snapshot read back
+                                holds only PF_OUTPUT ones */
 } render_opts;
 
 /* where things went, for tests and callers that annotate */
@@ -62,10 +65,11 @@ typedef struct render_layout {
 enum { RENDER_SCALAR, RENDER_BODY };
 
 /* values of key by for every particle into out (ps->n doubles; out may
-** be NULL to only check the key).  Returns RENDER_SCALAR or RENDER_BODY,
-** or -1 with a message in err that lists the keys there are. */
-int render_values(const particles *ps, const char *by, double *out,
-                  char *err, size_t errlen);
+** be NULL to only check the key); need as in render_opts.  Returns
+** RENDER_SCALAR or RENDER_BODY, or -1 with a message in err that names
+** the key and lists the keys there are. */
+int render_values(const particles *ps, const char *by, unsigned need,
+                  double *out, char *err, size_t errlen);
 
 /* draw into c (initialised here; canvas_free it after); lay may be NULL.
 ** 0, or -1 with err. */

@@ -12,6 +12,7 @@
 **                         style = "line" | "points" | "both"}, ...}}
 */
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 #include "cmap.h"
@@ -23,6 +24,26 @@
 
 static const char *const cmaps[] = {"auto", "seq", "div", NULL};
 static const char *const styles[] = {"line", "points", "both", NULL};
+
+/* luaL_error with the C library's formats: lua_pushfstring has no %g */
+static int rerror(lua_State *L, const char *fmt, ...) {
+  char buf[1024];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  return luaL_error(L, "%s", buf);
+}
+
+/* a whole number of pixels in [lo, hi]; def if absent */
+static int pixels(lua_State *L, int idx, const char *what, const char *key,
+                  int def, int lo, int hi) {
+  double v = chk_num(L, idx, what, key, def, -HUGE_VAL, HUGE_VAL, 0);
+  if (!(v >= lo && v <= hi) || v != floor(v))
+    rerror(L, "%s: field '%s' must be a whole number in [%d, %d] (got %g)",
+           what, key, lo, hi, v);
+  return (int)v;
+}
 
 /* optional string field; def if absent */
 static const char *optstr(lua_State *L, int idx, const char *what,
@@ -55,8 +76,8 @@ static int optrange(lua_State *L, int idx, const char *what, const char *key,
   lua_pop(L, 1);
   chk_vec(L, idx, what, key, r, 2, 1);
   if (!(r[1] > r[0]))
-    luaL_error(L, "%s: field '%s' = {%g, %g} must have hi > lo", what, key,
-               r[0], r[1]);
+    rerror(L, "%s: field '%s' = {%g, %g} must have hi > lo", what, key,
+              r[0], r[1]);
   return 1;
 }
 
@@ -76,7 +97,7 @@ int lrender_sim(lua_State *L) {
   memset(&o, 0, sizeof o);
   file = reqstr(L, 2, what, "file");
   o.by = optstr(L, 2, what, "by", "body");
-  o.width = (int)chk_num(L, 2, what, "width", 800, RENDER_MINW, PNG_MAXDIM, CHK_INT);
+  o.width = pixels(L, 2, what, "width", 800, RENDER_MINW, PNG_MAXDIM);
   o.has_range = optrange(L, 2, what, "range", o.range);
   o.cmap = chk_option(L, 2, what, "colormap", 0, cmaps) - 1; /* auto = -1 */
   if (render_values(&s->ps, o.by, 0, NULL, err, sizeof err) < 0)
@@ -143,16 +164,16 @@ static int lplot(lua_State *L) {
   o.ylabel = optstr(L, 1, what, "ylabel", NULL);
   o.xlog = chk_bool(L, 1, what, "xlog", 0);
   o.ylog = chk_bool(L, 1, what, "ylog", 0);
-  o.width = (int)chk_num(L, 1, what, "width", 800, PLOT_MINW, PNG_MAXDIM, CHK_INT);
-  o.height = (int)chk_num(L, 1, what, "height", 560, PLOT_MINH, PNG_MAXDIM, CHK_INT);
+  o.width = pixels(L, 1, what, "width", 800, PLOT_MINW, PNG_MAXDIM);
+  o.height = pixels(L, 1, what, "height", 560, PLOT_MINH, PNG_MAXDIM);
   o.has_xrange = optrange(L, 1, what, "xrange", o.xrange);
   o.has_yrange = optrange(L, 1, what, "yrange", o.yrange);
   if (o.has_xrange && o.xlog && !(o.xrange[0] > 0))
-    luaL_error(L, "plot: field 'xrange' must be > 0 on a log axis (got {%g, %g})",
-               o.xrange[0], o.xrange[1]);
+    rerror(L, "plot: field 'xrange' must be > 0 on a log axis (got {%g, %g})",
+              o.xrange[0], o.xrange[1]);
   if (o.has_yrange && o.ylog && !(o.yrange[0] > 0))
-    luaL_error(L, "plot: field 'yrange' must be > 0 on a log axis (got {%g, %g})",
-               o.yrange[0], o.yrange[1]);
+    rerror(L, "plot: field 'yrange' must be > 0 on a log axis (got {%g, %g})",
+              o.yrange[0], o.yrange[1]);
   lua_getfield(L, 1, "series");
   if (!lua_istable(L, -1) || luaL_len(L, -1) < 1)
     luaL_error(L, "plot: field 'series' is required: a list of {x = {...}, "

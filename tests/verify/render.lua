@@ -24,8 +24,10 @@ local function png_size(path)
   return string.unpack(">I4I4", s, 17)
 end
 
+-- the error of f(...) called from a Lua line, as a scene calls it
 local function err_of(f, ...)
-  local ok, e = pcall(f, ...)
+  local args = table.pack(...)
+  local ok, e = pcall(function() f(table.unpack(args, 1, args.n)) end)
   return not ok and tostring(e) or ""
 end
 
@@ -69,7 +71,7 @@ V.holds("unknown key names itself and lists keys", e:find("render.lua:%d+:") and
 e = err_of(sim.render, sim, {file = tmp("x.png"), widht = 300})
 V.holds("misspelt field gets a suggestion", e:find("did you mean 'width'"), 0, e)
 e = err_of(sim.render, sim, {file = tmp("x.png"), width = 10})
-V.holds("width below the minimum", e:find("'width' must be in %[120"), 0, e)
+V.holds("width below the minimum", e:find("'width' must be a whole number in %[120"), 0, e)
 e = err_of(sim.render, sim, {file = tmp("x.png"), range = {1, 0}})
 V.holds("range with hi < lo", e:find("'range'") and e:find("hi > lo"), 0, e)
 e = err_of(sim.render, sim, {file = tmp("x.png"), colormap = "rainbow"})

@@ -448,7 +448,7 @@ static int lindex(lua_State *L) {
   const char *k = luaL_checkstring(L, 2);
   if (strcmp(k, "t") == 0) lua_pushnumber(L, s->t);
   else if (strcmp(k, "dt") == 0) lua_pushnumber(L, s->started ? s->dt : sim_stable_dt(s));
-  else if (strcmp(k, "step") == 0 || strcmp(k, "steps") == 0) lua_pushinteger(L, s->step);
+  else if (strcmp(k, "steps") == 0) lua_pushinteger(L, s->step); /* "step" is the method */
   else if (strcmp(k, "t_end") == 0) lua_pushnumber(L, s->t_end);
   else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)s->ps.n);
   else if (strcmp(k, "nbody") == 0) lua_pushinteger(L, s->nbody);

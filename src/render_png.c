@@ -295,7 +295,7 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
   if (kind == RENDER_SCALAR) {
     L.bx0 = L.dx1 + 14 * s;
     L.bx1 = L.bx0 + 14 * s;
-    L.by0 = top + lh;
+    L.by0 = top + lh + 4 * s;  /* room for the key and the top label */
     L.by1 = L.dy1 > L.by0 + 60 * s ? L.dy1 : L.by0 + 60 * s;
     if (L.by1 + m > L.h) L.h = L.by1 + m;
   } else if (top + lh * (nleg + (more > 0)) + m > L.h)

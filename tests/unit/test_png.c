@@ -19,9 +19,11 @@
 #include "canvas.h"
 #include "cmap.h"
 #include "font.h"
+#include "out_h5.h"
 #include "particles.h"
 #include "plot_png.h"
 #include "png.h"
+#include "render_cmd.h"
 #include "render_png.h"
 #include "unit.h"
 
@@ -538,6 +540,53 @@ static void test_plot(void) {
              "log axis with a range from 0 refused: %s", err);
 }
 
+/* the render command on a snapshot: same picture as the renderer */
+static void test_render_cmd(void) {
+  particles ps;
+  h5meta meta = {1.5, 10, 0.1, "nondimensional", "t.lua", NULL};
+  render_opts o = unit_square("body", 400);
+  render_layout L;
+  canvas c;
+  char snap[512], out[512], err[512];
+  image im;
+  int x, y;
+  store(&ps, 2, 0.1);
+  ps.x[0][0] = 0.25; ps.x[1][0] = 0.75; ps.body[0] = 0;
+  ps.x[0][1] = 0.75; ps.x[1][1] = 0.25; ps.body[1] = 1;
+  path(snap, sizeof snap, "snap.h5");
+  path(out, sizeof out, "snap.png");
+  UNIT_CHECK(out_h5_write(snap, &ps, &meta, err, sizeof err) == 0, "snapshot: %s", err);
+  render_draw(&c, &L, &ps, &o, err, sizeof err);
+  canvas_free(&c);
+  {
+    char *argv[] = {"mvmpm", "render", snap, "--out", out, "--width", "400",
+                    "--domain", "0,1,0,1", NULL};
+    UNIT_CHECK(render_cmd(9, argv) == 0, "mvmpm render SNAP --out --width --domain");
+  }
+  im = decode(out);
+  UNIT_CHECK(im.w == L.w && im.h == L.h, "command's image %d x %d as laid out", im.w, im.h);
+  at(&L, &o, 0.25, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == cmap_category(0), "body 0 upper left from the snapshot");
+  at(&L, &o, 0.75, 0.25, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == cmap_category(1), "body 1 lower right from the snapshot");
+  at(&L, &o, 0.75, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == WHITE, "background between them");
+  free(im.px);
+  {
+    char *a1[] = {"mvmpm", "render", snap, "--by", "gradv.xx", "--out", out, NULL};
+    char *a2[] = {"mvmpm", "render", "/nonexistent-dir-mvmpm/s.h5", NULL};
+    char *a3[] = {"mvmpm", "render", snap, "--range", "2,1", NULL};
+    char *a4[] = {"mvmpm", "render", snap, "--bogus", NULL};
+    char *a5[] = {"mvmpm", "render", snap, "--by", "sdiff", "--out", out, NULL};
+    UNIT_CHECK(render_cmd(7, a1) == 1, "a field the snapshot lacks: status 1");
+    UNIT_CHECK(render_cmd(3, a2) == 1, "a missing snapshot: status 1");
+    UNIT_CHECK(render_cmd(5, a3) == 2, "a range with hi < lo: status 2");
+    UNIT_CHECK(render_cmd(4, a4) == 2, "an unknown option: status 2");
+    UNIT_CHECK(render_cmd(7, a5) == 0, "--by sdiff from a snapshot");
+  }
+  particles_free(&ps);
+}
+
 int main(int argc, char **argv) {
   snprintf(dir, sizeof dir, "%s", argc > 1 ? argv[1] : "/tmp/mvmpm_png_XXXXXX");
   if (argc < 2 && !mkdtemp(dir)) { perror("mkdtemp"); return 2; }
@@ -551,9 +600,10 @@ int main(int argc, char **argv) {
   test_font();
   test_axis();
   test_plot();
+  test_render_cmd();
   if (argc < 2) {
     const char *names[] = {"rgb.png", "rgba.png", "plainfile", "keep.png", "body.png",
-                           "mass.png", "plot.png", NULL};
+                           "mass.png", "plot.png", "snap.h5", "snap.png", NULL};
     char p[512];
     int k;
     for (k = 0; names[k]; k++) { path(p, sizeof p, names[k]); unlink(p); }

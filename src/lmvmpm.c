@@ -250,6 +250,7 @@ int luaopen_mvmpm(lua_State *L) {
   lbody_open(L);
   lmat_open(L, mod);
   lshape_open(L, mod);
+  lrender_open(L, mod);
   return 1;
 }
 

@@ -80,6 +80,9 @@ double lshape_area(const lshape *sh);   /* < 0 if not known */
 /* lua_thermal.c: sim:temperature(T | function(t)) */
 int lsim_temperature(lua_State *L);
 double lsim_temperature_at(lua_State *L, int simidx, double t);
+/* lua_render.c: sim:render{...} and mvmpm.plot{...} */
+int lrender_sim(lua_State *L);
+void lrender_open(lua_State *L, int modidx);
 /* run.c */
 int run_until(lua_State *L, int simidx, double t_end, long max_steps);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);

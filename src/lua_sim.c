@@ -465,7 +465,7 @@ static int lindex(lua_State *L) {
     if (!s->started) sim_begin(s);
     lua_pushnumber(L, s->dt);
   }
-  else if (strcmp(k, "step") == 0 || strcmp(k, "steps") == 0) lua_pushinteger(L, s->step);
+  else if (strcmp(k, "steps") == 0) lua_pushinteger(L, s->step); /* "step" is the method */
   else if (strcmp(k, "t_end") == 0) lua_pushnumber(L, s->t_end);
   else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)s->ps.n);
   else if (strcmp(k, "nbody") == 0) lua_pushinteger(L, s->nbody);
@@ -520,7 +520,8 @@ void lsim_open(lua_State *L) {
       {"output", loutput}, {"step", lstep}, {"run", lrun},
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
       {"particles", lparticles}, {"stable_dt", lstable_dt},
-      {"temperature", lsim_temperature}, {NULL, NULL}};
+      {"temperature", lsim_temperature}, {"render", lrender_sim},
+      {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);
   lua_setfield(L, -2, "__index");

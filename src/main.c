@@ -14,6 +14,7 @@
 #include "lmvmpm.h"
 #include "lsim.h"
 #include "lualib.h"
+#include "render_cmd.h"
 #include "repl.h"
 
 static const char *progname = "mvmpm";
@@ -23,6 +24,9 @@ static void usage(FILE *f) {
 "usage: %s run SCENE.lua [--set name=value ...] [--out DIR] [--quiet]\n"
 "       %s repl [SCENE.lua] [--set name=value ...]\n"
 "       %s test [FILE.lua ...]        (default: tests/verify/*.lua)\n"
+"       %s render SNAPSHOT.h5 [--by KEY] [--out FILE.png] [--width N]\n"
+"                [--range LO,HI] [--colormap auto|seq|div] [--title TEXT]\n"
+"                [--domain X0,X1,Y0,Y1]\n"
 "       %s --help | --version\n"
 "\n"
 "run    runs the scene to its end time, writing HDF5 snapshots, an XDMF\n"
@@ -33,8 +37,12 @@ static void usage(FILE *f) {
 "       sim:bodies(), sim:snapshot(path); help() lists more\n"
 "test   runs verification scripts; each check prints measured vs reference\n"
 "       and tolerance; ends with 'N passed, M failed'\n"
+"render draws a snapshot's particles as a PNG, coloured by KEY: body,\n"
+"       pressure, sdiff (principal stress difference), speed, or a field\n"
+"       such as velocity.x, stress.xy, mass (default: body); FILE defaults\n"
+"       to the snapshot's name with _KEY.png\n"
 "--set  overrides a parameter the scene declares with mvmpm.params{...}\n",
-          progname, progname, progname, progname);
+          progname, progname, progname, progname, progname);
 }
 
 static lua_State *newstate(const char *argv0) {
@@ -266,6 +274,7 @@ int main(int argc, char **argv) {
   if (strcmp(argv[1], "run") == 0) return cmd_run(argc, argv);
   if (strcmp(argv[1], "repl") == 0) return cmd_repl(argc, argv);
   if (strcmp(argv[1], "test") == 0) return cmd_test(argc, argv);
+  if (strcmp(argv[1], "render") == 0) return render_cmd(argc, argv);
   fprintf(stderr, "%s: unknown command '%s' (see %s --help)\n", progname, argv[1], progname);
   return 2;
 }

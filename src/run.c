@@ -240,7 +240,9 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   simidx = lua_absindex(L, simidx);
   if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
   out_start(L, ls);
-  while ((max_steps < 0 || k < max_steps) && s->t < t_end - 1e-12 * (1 + fabs(t_end))) {
+  /* t_end = HUGE_VAL (sim:step) would make the tolerance inf - inf = NaN */
+  while ((max_steps < 0 || k < max_steps) &&
+         (isinf(t_end) || s->t < t_end - 1e-12 * (1 + fabs(t_end)))) {
     /* steps land on the output times and on the end of the run */
     s->t_stop = ls->csv_open && ls->out_every > 0 && ls->out_next < t_end
                     ? ls->out_next : t_end;

@@ -9,6 +9,7 @@ sim:bodies()         the bodies; b:diag(), b:centroid(), b:velocity(), b:omega()
 sim:particles(name)  copy of a particle field (sim:particles() lists them)
 sim:snapshot(path)   write an HDF5 snapshot now
 sim:temperature(T)   impose a uniform temperature (a number or function(t)); sim:temperature() reads it
+sim:render{file = "x.png", by = "pressure"}   a picture now (by body, pressure, sdiff, speed, a field)
 sim.t sim.dt sim.steps sim.n   time, step size, step count, particle count
 sim.flip = f  sim.cfl = c  sim.dt = d  sim.friction = mu   change settings between steps
 show(v)              print a value as the prompt does (tables sorted, one level)

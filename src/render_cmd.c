@@ -1,0 +1,156 @@
+/*
+** render_cmd.c - the render command: read a snapshot, draw it.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cmap.h"
+#include "out_h5.h"
+#include "png.h"
+#include "render_cmd.h"
+#include "render_png.h"
+
+static const char *prog = "mvmpm render";
+
+/* n comma-separated finite numbers */
+static int numlist(const char *s, double *v, int n) {
+  int k;
+  char *end;
+  for (k = 0; k < n; k++) {
+    v[k] = strtod(s, &end);
+    if (end == s || !isfinite(v[k])) return -1;
+    s = end;
+    if (k < n - 1) {
+      if (*s != ',') return -1;
+      s++;
+    }
+  }
+  return *s ? -1 : 0;
+}
+
+static int usage_error(const char *msg, const char *arg) {
+  fprintf(stderr, "%s: %s%s%s\n"
+          "usage: mvmpm render SNAPSHOT.h5 [--by KEY] [--out FILE.png] "
+          "[--width N] [--range LO,HI]\n"
+          "                    [--colormap auto|seq|div] [--title TEXT] "
+          "[--domain X0,X1,Y0,Y1]\n", prog, msg, arg ? " " : "", arg ? arg : "");
+  return 2;
+}
+
+int render_cmd(int argc, char **argv) {
+  const char *snap = NULL, *out = NULL, *title = NULL;
+  char outbuf[4096], titlebuf[160], err[2048];
+  render_opts o;
+  particles ps;
+  h5meta meta;
+  double dom[4];
+  int i, has_domain = 0, rc = 0, d;
+  memset(&o, 0, sizeof o);
+  o.by = "body";
+  o.width = 800;
+  o.cmap = RENDER_AUTO;
+  for (i = 2; i < argc; i++) {
+    const char *a = argv[i], *val = i + 1 < argc ? argv[i + 1] : NULL;
+    int takes = strcmp(a, "--by") == 0 || strcmp(a, "--out") == 0 ||
+                strcmp(a, "--width") == 0 || strcmp(a, "--range") == 0 ||
+                strcmp(a, "--colormap") == 0 || strcmp(a, "--title") == 0 ||
+                strcmp(a, "--domain") == 0;
+    if (takes && !val) return usage_error("missing value after", a);
+    if (strcmp(a, "--by") == 0) o.by = val;
+    else if (strcmp(a, "--out") == 0) out = val;
+    else if (strcmp(a, "--title") == 0) title = val;
+    else if (strcmp(a, "--width") == 0) {
+      char *end;
+      long w = strtol(val, &end, 10);
+      if (end == val || *end || w < RENDER_MINW || w > PNG_MAXDIM) {
+        fprintf(stderr, "%s: --width must be a whole number in [%d, %d] (got '%s')\n",
+                prog, RENDER_MINW, PNG_MAXDIM, val);
+        return 2;
+      }
+      o.width = (int)w;
+    } else if (strcmp(a, "--range") == 0) {
+      if (numlist(val, o.range, 2) || !(o.range[1] > o.range[0])) {
+        fprintf(stderr, "%s: --range must be LO,HI with LO < HI (got '%s')\n",
+                prog, val);
+        return 2;
+      }
+      o.has_range = 1;
+    } else if (strcmp(a, "--colormap") == 0) {
+      if (strcmp(val, "auto") == 0) o.cmap = RENDER_AUTO;
+      else if (strcmp(val, "seq") == 0) o.cmap = CMAP_SEQ;
+      else if (strcmp(val, "div") == 0) o.cmap = CMAP_DIV;
+      else {
+        fprintf(stderr, "%s: --colormap must be auto, seq or div (got '%s')\n",
+                prog, val);
+        return 2;
+      }
+    } else if (strcmp(a, "--domain") == 0) {
+      if (numlist(val, dom, 4) || !(dom[1] > dom[0]) || !(dom[3] > dom[2])) {
+        fprintf(stderr, "%s: --domain must be X0,X1,Y0,Y1 with X0 < X1 and "
+                "Y0 < Y1 (got '%s')\n", prog, val);
+        return 2;
+      }
+      has_domain = 1;
+    } else if (a[0] == '-' && a[1]) return usage_error("unknown option", a);
+    else if (!snap) snap = a;
+    else return usage_error("unexpected argument", a);
+    if (takes) i++;
+  }
+  if (!snap) return usage_error("no snapshot given", NULL);
+  if (!out) {
+    size_t n = strlen(snap);
+    if (n > 3 && strcmp(snap + n - 3, ".h5") == 0) n -= 3;
+    if ((size_t)snprintf(outbuf, sizeof outbuf, "%.*s_%s.png", (int)n, snap,
+                         o.by) >= sizeof outbuf)
+      return usage_error("output path too long; give --out", NULL);
+    out = outbuf;
+  }
+
+  particles_init(&ps);
+  memset(&meta, 0, sizeof meta);
+  if (out_h5_read(snap, &ps, &meta, err, sizeof err)) {
+    fprintf(stderr, "%s: %s\n", prog, err);
+    particles_free(&ps);
+    return 1;
+  }
+  o.need = PF_OUTPUT;
+  if (render_values(&ps, o.by, o.need, NULL, err, sizeof err) < 0) {
+    fprintf(stderr, "%s: %s: %s\n", prog, snap, err);
+    particles_free(&ps);
+    return 1;
+  }
+  if (has_domain) {
+    o.lo[0] = dom[0]; o.hi[0] = dom[1];
+    o.lo[1] = dom[2]; o.hi[1] = dom[3];
+  } else {
+    size_t k;
+    double pad = meta.cell > 0 ? meta.cell : 0;
+    for (d = 0; d < 2; d++) {
+      o.lo[d] = HUGE_VAL;
+      o.hi[d] = -HUGE_VAL;
+      for (k = 0; k < ps.n; k++)
+        if (isfinite(ps.x[d][k])) {
+          if (ps.x[d][k] < o.lo[d]) o.lo[d] = ps.x[d][k];
+          if (ps.x[d][k] > o.hi[d]) o.hi[d] = ps.x[d][k];
+        }
+      if (o.lo[d] > o.hi[d]) { o.lo[d] = 0; o.hi[d] = 1; } /* no particles */
+      if (pad <= 0) pad = 0.05 * (o.hi[d] - o.lo[d]);
+      if (pad <= 0) pad = 0.5;
+      o.lo[d] -= pad;
+      o.hi[d] += pad;
+    }
+  }
+  if (!title) {
+    snprintf(titlebuf, sizeof titlebuf, "%s   t = %.6g", o.by, meta.time);
+    title = titlebuf;
+  }
+  o.title = title;
+  if (render_png(out, &ps, &o, err, sizeof err)) {
+    fprintf(stderr, "%s: %s\n", prog, err);
+    rc = 1;
+  } else
+    printf("%s: %zu particles, t = %g -> %s\n", snap, ps.n, meta.time, out);
+  particles_free(&ps);
+  return rc;
+}

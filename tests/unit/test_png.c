@@ -1,0 +1,613 @@
+/*
+** test_png.c - PNG files, the particle renderer and the plot writer.
+** Every image is decoded here with zlib alone (chunk CRCs, IHDR,
+** inflate, filter bytes) and pixels are checked where the picture's
+** geometry says they must be: a particle's colour at its position (y up),
+** background beside it, the colour bar's ends, a plotted point.
+*/
+#include <errno.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include "axis.h"
+#include "canvas.h"
+#include "cmap.h"
+#include "font.h"
+#include "out_h5.h"
+#include "particles.h"
+#include "plot_png.h"
+#include "png.h"
+#include "render_cmd.h"
+#include "render_png.h"
+#include "unit.h"
+
+#define WHITE 0xFFFFFFu
+
+static char dir[256];
+
+static int exists(const char *p) {
+  struct stat st;
+  return stat(p, &st) == 0;
+}
+
+static uint32_t be32(const unsigned char *p) {
+  return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
+}
+
+typedef struct image {
+  int w, h, ch, ok;
+  unsigned char *px;
+} image;
+
+/* decode what png_write makes: 8-bit RGB or RGBA, filter 0 rows; every
+** chunk's CRC must match and IEND must end the file */
+static image decode(const char *path) {
+  static const unsigned char sig[8] = {137, 'P', 'N', 'G', 13, 10, 26, 10};
+  image im = {0, 0, 0, 0, NULL};
+  FILE *f = fopen(path, "rb");
+  unsigned char *buf, *z = NULL;
+  size_t n = 0, zn = 0, at = 8;
+  long len;
+  int crcs = 1, seen_end = 0, y;
+  if (!f) { printf("cannot open %s\n", path); return im; }
+  fseek(f, 0, SEEK_END);
+  len = ftell(f);
+  fseek(f, 0, SEEK_SET);
+  buf = malloc(len);
+  n = fread(buf, 1, len, f);
+  fclose(f);
+  UNIT_CHECK(n >= 8 && memcmp(buf, sig, 8) == 0, "%s: PNG signature", path);
+  while (at + 12 <= n) {
+    uint32_t cl = be32(buf + at);
+    const unsigned char *type = buf + at + 4, *data = buf + at + 8;
+    if (at + 12 + cl > n) break;
+    if (crc32(0L, type, cl + 4) != be32(data + cl)) crcs = 0;
+    if (memcmp(type, "IHDR", 4) == 0) {
+      UNIT_CHECK(at == 8 && cl == 13, "IHDR first, 13 bytes");
+      im.w = (int)be32(data);
+      im.h = (int)be32(data + 4);
+      UNIT_CHECK(data[8] == 8 && (data[9] == 2 || data[9] == 6) && data[10] == 0 &&
+                 data[11] == 0 && data[12] == 0, "IHDR: depth 8, RGB(A), no interlace");
+      im.ch = data[9] == 2 ? 3 : 4;
+    } else if (memcmp(type, "IDAT", 4) == 0) {
+      z = realloc(z, zn + cl + 1);
+      memcpy(z + zn, data, cl);
+      zn += cl;
+    } else if (memcmp(type, "IEND", 4) == 0) {
+      seen_end = at + 12 == n;
+    }
+    at += 12 + cl;
+  }
+  UNIT_CHECK(crcs, "%s: every chunk CRC matches", path);
+  UNIT_CHECK(seen_end, "%s: IEND ends the file", path);
+  if (im.w > 0 && im.h > 0 && z) {
+    uLongf rn = (uLongf)((size_t)im.h * (1 + (size_t)im.w * im.ch));
+    unsigned char *raw = malloc(rn);
+    int zr = uncompress(raw, &rn, z, (uLong)zn);
+    UNIT_CHECK(zr == Z_OK && rn == (uLongf)((size_t)im.h * (1 + (size_t)im.w * im.ch)),
+               "%s: IDAT inflates to the image size", path);
+    if (zr == Z_OK) {
+      int filt = 1;
+      im.px = malloc((size_t)im.w * im.h * im.ch);
+      for (y = 0; y < im.h; y++) {
+        const unsigned char *r = raw + (size_t)y * (1 + (size_t)im.w * im.ch);
+        if (r[0] != 0) filt = 0;
+        memcpy(im.px + (size_t)y * im.w * im.ch, r + 1, (size_t)im.w * im.ch);
+      }
+      UNIT_CHECK(filt, "every row has filter 0");
+      im.ok = filt;
+    }
+    free(raw);
+  }
+  free(z);
+  free(buf);
+  return im;
+}
+
+static uint32_t pix(const image *im, int x, int y) {
+  const unsigned char *p;
+  if (!im->ok || x < 0 || y < 0 || x >= im->w || y >= im->h) return 0xDEAD;
+  p = im->px + ((size_t)y * im->w + x) * im->ch;
+  return (uint32_t)p[0] << 16 | (uint32_t)p[1] << 8 | p[2];
+}
+
+static void path(char *buf, size_t n, const char *name) {
+  snprintf(buf, n, "%s/%s", dir, name);
+}
+
+static void test_png_roundtrip(void) {
+  unsigned char rgb[2 * 3 * 3], rgba[3 * 2 * 4];
+  char p[512], err[512];
+  image im;
+  int k;
+  for (k = 0; k < (int)sizeof rgb; k++) rgb[k] = (unsigned char)(k * 37 + 11);
+  for (k = 0; k < (int)sizeof rgba; k++) rgba[k] = (unsigned char)(k * 53 + 7);
+  path(p, sizeof p, "rgb.png");
+  UNIT_CHECK(png_write(p, rgb, 3, 2, 3, err, sizeof err) == 0, "png_write: %s", err);
+  im = decode(p);
+  UNIT_CHECK(im.w == 3 && im.h == 2 && im.ch == 3, "IHDR 3 x 2 RGB (got %d x %d, %d)",
+             im.w, im.h, im.ch);
+  UNIT_CHECK(im.ok && memcmp(im.px, rgb, sizeof rgb) == 0, "RGB pixels come back");
+  free(im.px);
+  path(p, sizeof p, "rgba.png");
+  UNIT_CHECK(png_write(p, rgba, 2, 3, 4, err, sizeof err) == 0, "png_write: %s", err);
+  im = decode(p);
+  UNIT_CHECK(im.w == 2 && im.h == 3 && im.ch == 4, "IHDR 2 x 3 RGBA");
+  UNIT_CHECK(im.ok && memcmp(im.px, rgba, sizeof rgba) == 0, "RGBA pixels come back");
+  free(im.px);
+  strcat(p, ".tmp");
+  UNIT_CHECK(!exists(p), "no temporary file left after success");
+  UNIT_CHECK(png_write(p, rgb, 0, 2, 3, err, sizeof err) < 0 && strstr(err, "size"),
+             "a 0-wide image is refused: %s", err);
+  UNIT_CHECK(png_write(p, rgb, 3, 2, 2, err, sizeof err) < 0, "2 channels refused");
+}
+
+static void test_png_unwritable(void) {
+  unsigned char rgb[12] = {0};
+  char file[512], p[600], err[512];
+  FILE *f;
+  path(file, sizeof file, "plainfile");
+  f = fopen(file, "w");
+  fclose(f);
+  /* a path under a regular file can never be created, even by root */
+  snprintf(p, sizeof p, "%s/x.png", file);
+  UNIT_CHECK(png_write(p, rgb, 2, 2, 3, err, sizeof err) < 0, "write under a file fails");
+  UNIT_CHECK(strstr(err, p) && strstr(err, "Not a directory"),
+             "the message names the path and the reason: %s", err);
+  UNIT_CHECK(!exists(p), "no file under the final name");
+  strcat(p, ".tmp");
+  UNIT_CHECK(!exists(p), "no temporary file");
+  UNIT_CHECK(png_write("/nonexistent-dir-mvmpm/x.png", rgb, 2, 2, 3, err,
+                       sizeof err) < 0 && strstr(err, "No such file"),
+             "missing directory: %s", err);
+  /* the final name is left alone when a write fails */
+  path(p, sizeof p, "keep.png");
+  UNIT_CHECK(png_write(p, rgb, 2, 2, 3, err, sizeof err) == 0, "first write");
+  UNIT_CHECK(png_write(p, rgb, 0, 2, 3, err, sizeof err) < 0, "failing rewrite");
+  {
+    image im = decode(p);
+    UNIT_CHECK(im.ok && im.w == 2, "the earlier file is intact");
+    free(im.px);
+  }
+}
+
+/* a store of n particles of side a (volume a^2) */
+static void store(particles *ps, int n, double a) {
+  int i;
+  particles_init(ps);
+  for (i = 0; i < n; i++) {
+    particles_push(ps);
+    ps->vol0[i] = a * a;
+    ps->m[i] = 1;
+  }
+}
+
+/* pixel of world point (x, y) by the domain rectangle: y up */
+static void at(const render_layout *L, const render_opts *o, double x, double y,
+               int *px, int *py) {
+  *px = L->dx0 + (int)floor((x - o->lo[0]) / (o->hi[0] - o->lo[0]) * (L->dx1 - L->dx0));
+  *py = L->dy0 + (int)floor((o->hi[1] - y) / (o->hi[1] - o->lo[1]) * (L->dy1 - L->dy0));
+}
+
+static render_opts unit_square(const char *by, int width) {
+  render_opts o;
+  memset(&o, 0, sizeof o);
+  o.by = by;
+  o.width = width;
+  o.cmap = RENDER_AUTO;
+  o.lo[0] = o.lo[1] = 0;
+  o.hi[0] = o.hi[1] = 1;
+  o.title = "test";
+  return o;
+}
+
+static void test_render_body(void) {
+  particles ps;
+  render_opts o = unit_square("body", 400);
+  render_layout L;
+  canvas c;
+  char p[512], err[512];
+  image im;
+  int x, y;
+  uint32_t c0 = cmap_category(0), c1 = cmap_category(1);
+  store(&ps, 2, 0.1);
+  ps.x[0][0] = 0.25; ps.x[1][0] = 0.75; ps.body[0] = 0;   /* upper left */
+  ps.x[0][1] = 0.75; ps.x[1][1] = 0.25; ps.body[1] = 1;   /* lower right */
+  ps.F[0][0] = 2;  /* particle 0 stretched to 0.2 along x */
+  UNIT_CHECK(c0 != c1 && c0 != WHITE && c1 != WHITE, "body colours differ");
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "render_draw: %s", err);
+  canvas_free(&c);
+  UNIT_CHECK(L.w == 400 && L.dx1 - L.dx0 == L.dy1 - L.dy0,
+             "a square domain is a square (%d x %d)", L.dx1 - L.dx0, L.dy1 - L.dy0);
+  path(p, sizeof p, "body.png");
+  UNIT_CHECK(render_png(p, &ps, &o, err, sizeof err) == 0, "render_png: %s", err);
+  im = decode(p);
+  UNIT_CHECK(im.w == L.w && im.h == L.h, "image is %d x %d as laid out", im.w, im.h);
+  at(&L, &o, 0.25, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == c0, "body 0 colour at (0.25, 0.75), upper left (got %06x)",
+             (unsigned)pix(&im, x, y));
+  at(&L, &o, 0.25 + 0.085, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == c0, "F stretches particle 0 to 0.085 right of centre");
+  at(&L, &o, 0.25 + 0.12, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == WHITE, "background beyond its stretched edge");
+  at(&L, &o, 0.25, 0.75 + 0.07, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == WHITE, "unstretched along y: background 0.07 above");
+  at(&L, &o, 0.75, 0.25, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == c1, "body 1 colour at (0.75, 0.25), lower right");
+  at(&L, &o, 0.75 + 0.04, 0.25 - 0.04, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == c1, "its square reaches 0.04 from the centre");
+  at(&L, &o, 0.75 + 0.07, 0.25, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == WHITE, "background 0.07 beside it");
+  at(&L, &o, 0.75, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == WHITE, "background at (0.75, 0.75)");
+  at(&L, &o, 0.25, 0.25, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == WHITE, "background at (0.25, 0.25)");
+  UNIT_CHECK(pix(&im, L.dx0 - 1, (L.dy0 + L.dy1) / 2) == 0 &&
+             pix(&im, (L.dx0 + L.dx1) / 2, L.dy1) == 0, "the domain outline is drawn");
+  free(im.px);
+  /* a tall domain keeps its aspect */
+  o.hi[1] = 2;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "tall: %s", err);
+  UNIT_CHECK(abs((L.dy1 - L.dy0) - 2 * (L.dx1 - L.dx0)) <= 1, "1 x 2 domain is twice as high");
+  canvas_free(&c);
+  particles_free(&ps);
+}
+
+static void test_render_scalar(void) {
+  particles ps;
+  render_opts o = unit_square("mass", 400);
+  render_layout L;
+  canvas c;
+  char p[512], err[1024];
+  image im;
+  int x, y, bx;
+  uint32_t lo = cmap_color(CMAP_SEQ, 0), hi = cmap_color(CMAP_SEQ, 1);
+  store(&ps, 2, 0.1);
+  ps.x[0][0] = 0.25; ps.x[1][0] = 0.5; ps.m[0] = 1;
+  ps.x[0][1] = 0.75; ps.x[1][1] = 0.5; ps.m[1] = 3;
+  path(p, sizeof p, "mass.png");
+  UNIT_CHECK(render_png(p, &ps, &o, err, sizeof err) == 0, "render_png: %s", err);
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "render_draw");
+  canvas_free(&c);
+  UNIT_CHECK(L.vlo == 1 && L.vhi == 3 && L.cmap == CMAP_SEQ,
+             "positive values: range = min, max on the sequential map");
+  im = decode(p);
+  at(&L, &o, 0.25, 0.5, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == lo, "the smallest value has the map's first colour");
+  at(&L, &o, 0.75, 0.5, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == hi, "the largest has its last colour");
+  bx = (L.bx0 + L.bx1) / 2;
+  UNIT_CHECK(pix(&im, bx, L.by0) == hi, "colour bar top = last colour (got %06x)",
+             (unsigned)pix(&im, bx, L.by0));
+  UNIT_CHECK(pix(&im, bx, L.by1 - 1) == lo, "colour bar bottom = first colour");
+  UNIT_CHECK(pix(&im, bx, L.by0 - 1) == 0, "the bar has an outline");
+  free(im.px);
+  /* signed values: the diverging map, symmetric about zero */
+  ps.m[0] = -1;
+  ps.m[1] = 2;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "render_draw");
+  UNIT_CHECK(L.cmap == CMAP_DIV && L.vlo == -2 && L.vhi == 2, "both signs: div, +-2");
+  at(&L, &o, 0.25, 0.5, &x, &y);
+  UNIT_CHECK(canvas_get(&c, x, y) == cmap_color(CMAP_DIV, 0.25), "-1 sits a quarter up");
+  canvas_free(&c);
+  /* a given range clamps */
+  o.has_range = 1;
+  o.range[0] = 0;
+  o.range[1] = 1;
+  o.cmap = CMAP_SEQ;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "render_draw");
+  at(&L, &o, 0.75, 0.5, &x, &y);
+  UNIT_CHECK(canvas_get(&c, x, y) == hi, "above the range: the last colour");
+  canvas_free(&c);
+  /* bad keys name themselves and list the good ones */
+  o.by = "nosuch";
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) < 0 && strstr(err, "'nosuch'") &&
+             strstr(err, "stress.xx|yy|xy|zz") && strstr(err, "sdiff"),
+             "unknown key: %s", err);
+  o.by = "stress";
+  UNIT_CHECK(render_values(&ps, o.by, 0, NULL, err, sizeof err) < 0 &&
+             strstr(err, "stress.xx"), "a field needs its component: %s", err);
+  o.by = "velocity.q";
+  UNIT_CHECK(render_values(&ps, o.by, 0, NULL, err, sizeof err) < 0 &&
+             strstr(err, "no component 'q'"), "bad component: %s", err);
+  UNIT_CHECK(render_values(&ps, "gradv.xx", PF_OUTPUT, NULL, err, sizeof err) < 0,
+             "a field without the needed flags is absent");
+  o.by = "mass";
+  o.width = 50;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) < 0 && strstr(err, "width"),
+             "too narrow: %s", err);
+  particles_free(&ps);
+}
+
+static void test_values(void) {
+  particles ps;
+  double v[1];
+  char err[1024];
+  store(&ps, 1, 0.1);
+  /* sigma = diag(-3, -6) with s_zz = -3: pressure 4 */
+  ps.s[S_XX][0] = -3; ps.s[S_YY][0] = -6; ps.s[S_ZZ][0] = -3; ps.s[S_XY][0] = 0;
+  UNIT_CHECK(render_values(&ps, "pressure", 0, v, err, sizeof err) == RENDER_SCALAR, "pressure");
+  UNIT_NEAR(v[0], 4.0, 1e-14, "pressure of diag(-3, -6), zz -3");
+  /* [[3, sqrt 3], [sqrt 3, 1]] has eigenvalues 4 and 0 */
+  ps.s[S_XX][0] = 3; ps.s[S_YY][0] = 1; ps.s[S_XY][0] = sqrt(3.0);
+  render_values(&ps, "sdiff", 0, v, err, sizeof err);
+  UNIT_NEAR(v[0], 4.0, 1e-14, "sdiff of [[3, sqrt3], [sqrt3, 1]]");
+  ps.v[0][0] = 3; ps.v[1][0] = -4;
+  render_values(&ps, "speed", 0, v, err, sizeof err);
+  UNIT_NEAR(v[0], 5.0, 1e-14, "speed of (3, -4)");
+  render_values(&ps, "velocity.y", 0, v, err, sizeof err);
+  UNIT_NEAR(v[0], -4.0, 0, "velocity.y");
+  render_values(&ps, "velocity.2", 0, v, err, sizeof err);
+  UNIT_NEAR(v[0], -4.0, 0, "velocity.2 (component by number)");
+  render_values(&ps, "stress.xy", 0, v, err, sizeof err);
+  UNIT_NEAR(v[0], sqrt(3.0), 0, "stress.xy");
+  ps.body[0] = 3;
+  UNIT_CHECK(render_values(&ps, "body", 0, v, err, sizeof err) == RENDER_BODY && v[0] == 3,
+             "body is categorical");
+  UNIT_CHECK(particles_add_field(&ps, "bond", 1, PF_DOUBLE, "", PF_OUTPUT) >= 0, "add bond");
+  ((double *)particles_comp(&ps, particles_find(&ps, "bond"), 0))[0] = 0.5;
+  UNIT_CHECK(render_values(&ps, "bond", PF_OUTPUT, v, err, sizeof err) == RENDER_SCALAR &&
+             v[0] == 0.5, "a run-time field 'bond'");
+  particles_free(&ps);
+}
+
+static void test_deterministic(void) {
+  particles ps;
+  render_opts o = unit_square("sdiff", 300);
+  canvas c1, c2;
+  unsigned char *b1, *b2;
+  size_t n1, n2;
+  char err[512];
+  int i;
+  store(&ps, 50, 0.03);
+  for (i = 0; i < 50; i++) {
+    ps.x[0][i] = 0.1 + 0.016 * i;
+    ps.x[1][i] = 0.5 + 0.3 * sin(i);
+    ps.s[S_XY][i] = cos(3.0 * i);
+    ps.F[1][i] = 0.3; /* sheared */
+  }
+  render_draw(&c1, NULL, &ps, &o, err, sizeof err);
+  render_draw(&c2, NULL, &ps, &o, err, sizeof err);
+  png_encode(c1.px, c1.w, c1.h, 3, &b1, &n1, err, sizeof err);
+  png_encode(c2.px, c2.w, c2.h, 3, &b2, &n2, err, sizeof err);
+  UNIT_CHECK(n1 == n2 && memcmp(b1, b2, n1) == 0, "same input, same bytes");
+  free(b1);
+  free(b2);
+  canvas_free(&c1);
+  canvas_free(&c2);
+  particles_free(&ps);
+}
+
+/* lightness rises along the sequential map; the diverging one goes from
+** blue through grey to red */
+static void test_cmaps(void) {
+  int k, mono = 1;
+  double prev = -1;
+  uint32_t m = cmap_color(CMAP_DIV, 0.5), a = cmap_color(CMAP_DIV, 0),
+           b = cmap_color(CMAP_DIV, 1);
+  for (k = 0; k <= 256; k++) {
+    uint32_t c = cmap_color(CMAP_SEQ, k / 256.0);
+    double l = 0.2126 * (c >> 16) + 0.7152 * (c >> 8 & 255) + 0.0722 * (c & 255);
+    if (l < prev - 0.5) mono = 0; /* 0.5: rounding each channel to 8 bits */
+    prev = l;
+  }
+  UNIT_CHECK(mono, "sequential map: luminance never falls (beyond rounding)");
+  {
+    uint32_t c0 = cmap_color(CMAP_SEQ, 0), c1 = cmap_color(CMAP_SEQ, 1);
+    double l0 = 0.2126 * (c0 >> 16) + 0.7152 * (c0 >> 8 & 255) + 0.0722 * (c0 & 255);
+    double l1 = 0.2126 * (c1 >> 16) + 0.7152 * (c1 >> 8 & 255) + 0.0722 * (c1 & 255);
+    UNIT_CHECK(l1 - l0 > 150, "sequential map spans dark to light (%.0f to %.0f)", l0, l1);
+  }
+  UNIT_CHECK((m >> 16) == (m & 255) && (m >> 16) == (m >> 8 & 255) && m != WHITE,
+             "diverging middle is a grey that is not the background");
+  UNIT_CHECK((a & 255) > (a >> 16) && (b >> 16) > (b & 255), "blue end, red end");
+  UNIT_CHECK(cmap_color(CMAP_SEQ, NAN) == CMAP_NAN, "NaN gets its own colour");
+  for (k = 0; k < CMAP_NCAT; k++) {
+    int j, far = 1;
+    for (j = 0; j < k; j++) {
+      uint32_t p = cmap_category(j), q = cmap_category(k);
+      int dr = (int)(p >> 16) - (int)(q >> 16), dg = (int)(p >> 8 & 255) - (int)(q >> 8 & 255),
+          db = (int)(p & 255) - (int)(q & 255);
+      if (dr * dr + dg * dg + db * db < 60 * 60) far = 0;
+    }
+    UNIT_CHECK(far, "categorical colour %d is far from those before it", k);
+  }
+}
+
+static void test_font(void) {
+  unsigned long cp;
+  int bad = 0;
+  const char *s = "σ";
+  for (cp = 32; cp < 127; cp++) {
+    const char *g = font_glyph(cp);
+    size_t n = g ? strlen(g) : 999, i;
+    if (!g || (n && (n + 1) % 6) || n > 9 * 6 - 1) { bad++; continue; }
+    for (i = 0; i < n; i++)
+      if ((i % 6 == 5) != (g[i] == ' ') || (g[i] != ' ' && g[i] != '#' && g[i] != '.')) bad++;
+    if (cp != ' ' && !strchr(g, '#')) bad++;
+  }
+  UNIT_CHECK(bad == 0, "every ASCII glyph is rows of 5 '#'/'.' (%d bad)", bad);
+  UNIT_CHECK(font_next(&s) == 0x3C3 && *s == 0, "UTF-8 sigma decodes");
+  UNIT_CHECK(font_glyph(0x3C3) != NULL, "sigma has a glyph");
+  {
+    canvas c;
+    int x, y, in = 0, out = 0;
+    canvas_init(&c, 40, 30, WHITE);
+    canvas_text(&c, 10, 10, "1", 2, 0, CV_LEFT, CV_TOP, 0);
+    for (y = 0; y < 30; y++)
+      for (x = 0; x < 40; x++) {
+        int inside = x >= 10 && x < 20 && y >= 10 && y < 24;
+        if (canvas_get(&c, x, y) == 0) { if (inside) in++; else out++; }
+      }
+    UNIT_CHECK(in > 10 && out == 0, "'1' at scale 2 inks only its 10 x 14 cell (%d in, %d out)",
+               in, out);
+    canvas_free(&c);
+  }
+}
+
+static void test_axis(void) {
+  double t[AXIS_MAXTICKS], mn[4 * AXIS_MAXTICKS], step;
+  char b[64];
+  int n = axis_ticks(0, 1, 6, t, &step), nm;
+  UNIT_CHECK(n == 6 && step == 0.2 && t[0] == 0 && fabs(t[5] - 1) < 1e-15,
+             "ticks of [0, 1]: 0, 0.2, ..., 1 (n %d, step %g)", n, step);
+  n = axis_ticks(-0.095, 0.095, 6, t, &step);
+  UNIT_CHECK(n >= 3 && t[0] >= -0.095 && t[n - 1] <= 0.095, "ticks stay inside the range");
+  axis_label(0.2, 0.2, b, sizeof b);
+  UNIT_CHECK(strcmp(b, "0.2") == 0, "label 0.2 (got %s)", b);
+  axis_label(0.25, 0.25, b, sizeof b);
+  UNIT_CHECK(strcmp(b, "0.25") == 0, "label 0.25 (got %s)", b);
+  axis_label(1.5e-5, 1e-6, b, sizeof b);
+  UNIT_CHECK(strcmp(b, "1.5e-5") == 0, "label 1.5e-5 (got %s)", b);
+  axis_label(-2e6, 1e6, b, sizeof b);
+  UNIT_CHECK(strcmp(b, "-2e6") == 0, "label -2e6 (got %s)", b);
+  n = axis_logticks(1, 1000, t, mn, &nm);
+  UNIT_CHECK(n == 4 && t[0] == 1 && t[3] == 1000 && nm == 24, "log ticks 1..1000 (%d, %d minor)",
+             n, nm);
+}
+
+static void test_plot(void) {
+  double x1[4] = {0, 1, 2, 3}, y1[4] = {0, 1, 4, 9};
+  double x2[3] = {1, NAN, 2}, y2[3] = {5, 5, INFINITY};
+  double x3[1] = {7}, y3[1] = {-2};
+  double xl[3] = {-1, 10, 100}, yl[3] = {1, 0.1, 0.01};
+  plot_series s[3] = {{x1, y1, 4, "squares", PLOT_BOTH},
+                      {x2, y2, 3, "broken", PLOT_LINE},
+                      {x3, y3, 1, NULL, PLOT_POINTS}};
+  plot_opts o;
+  plot_layout L;
+  canvas c;
+  char p[512], err[512];
+  double px, py;
+  image im;
+  memset(&o, 0, sizeof o);
+  o.width = 400;
+  o.height = 300;
+  o.title = "t";
+  o.xlabel = "x";
+  o.ylabel = "y";
+  o.has_xrange = o.has_yrange = 1;
+  o.xrange[0] = 0; o.xrange[1] = 10;
+  o.yrange[0] = -10; o.yrange[1] = 10;
+  UNIT_CHECK(plot_draw(&c, &L, s, 3, &o, err, sizeof err) == 0, "plot_draw: %s", err);
+  plot_map(&L, &o, 5, 0, &px, &py);
+  UNIT_CHECK(fabs(px - 0.5 * (L.px0 + L.px1)) < 1e-9 && fabs(py - 0.5 * (L.py0 + L.py1)) < 1e-9,
+             "the middle of the ranges maps to the middle of the plot");
+  plot_map(&L, &o, 2, 4, &px, &py);
+  UNIT_CHECK(canvas_get(&c, (int)px, (int)py) == cmap_category(0), "series 1 marker at (2, 4)");
+  plot_map(&L, &o, 7, -2, &px, &py);
+  UNIT_CHECK(canvas_get(&c, (int)px, (int)py) == cmap_category(2),
+             "a single point still shows");
+  plot_map(&L, &o, 0.5, 0.5, &px, &py);
+  UNIT_CHECK(canvas_get(&c, (int)px, (int)py) == cmap_category(0),
+             "the line between (0, 0) and (1, 1)");
+  plot_map(&L, &o, 1.5, 5, &px, &py);
+  UNIT_CHECK(canvas_get(&c, (int)px, (int)py) != cmap_category(1),
+             "no line bridges a NaN point");
+  plot_map(&L, &o, 1, NAN, &px, &py);
+  UNIT_CHECK(isnan(px), "NaN points do not map");
+  canvas_free(&c);
+  /* automatic ranges hold every usable point */
+  o.has_xrange = o.has_yrange = 0;
+  UNIT_CHECK(plot_draw(&c, &L, s, 3, &o, err, sizeof err) == 0, "auto ranges");
+  UNIT_CHECK(L.xlo < 0 && L.xhi > 7 && L.ylo < -2 && L.yhi > 9, "auto range [%g, %g] x [%g, %g]",
+             L.xlo, L.xhi, L.ylo, L.yhi);
+  canvas_free(&c);
+  /* one constant point alone */
+  UNIT_CHECK(plot_draw(&c, &L, s + 2, 1, &o, err, sizeof err) == 0 && L.xlo < 7 && L.xhi > 7 &&
+             L.ylo < -2 && L.yhi > -2, "a single point gets a range around it");
+  canvas_free(&c);
+  /* log axes skip x <= 0, and the file decodes */
+  s[0].x = xl; s[0].y = yl; s[0].n = 3;
+  o.xlog = o.ylog = 1;
+  path(p, sizeof p, "plot.png");
+  UNIT_CHECK(plot_png(p, s, 1, &o, err, sizeof err) == 0, "plot_png: %s", err);
+  UNIT_CHECK(plot_draw(&c, &L, s, 1, &o, err, sizeof err) == 0 && L.xlo > 0 && L.xlo < 10 &&
+             L.ylo < 0.01, "log ranges from the positive points only");
+  canvas_free(&c);
+  im = decode(p);
+  UNIT_CHECK(im.ok && im.w == 400 && im.h == 300, "plot PNG is 400 x 300");
+  free(im.px);
+  o.has_xrange = 1;
+  o.xrange[0] = 0; o.xrange[1] = 1;
+  UNIT_CHECK(plot_png(p, s, 1, &o, err, sizeof err) < 0 && strstr(err, "xrange"),
+             "log axis with a range from 0 refused: %s", err);
+}
+
+/* the render command on a snapshot: same picture as the renderer */
+static void test_render_cmd(void) {
+  particles ps;
+  h5meta meta = {1.5, 10, 0.1, "nondimensional", "t.lua", NULL};
+  render_opts o = unit_square("body", 400);
+  render_layout L;
+  canvas c;
+  char snap[512], out[512], err[512];
+  image im;
+  int x, y;
+  store(&ps, 2, 0.1);
+  ps.x[0][0] = 0.25; ps.x[1][0] = 0.75; ps.body[0] = 0;
+  ps.x[0][1] = 0.75; ps.x[1][1] = 0.25; ps.body[1] = 1;
+  path(snap, sizeof snap, "snap.h5");
+  path(out, sizeof out, "snap.png");
+  UNIT_CHECK(out_h5_write(snap, &ps, &meta, err, sizeof err) == 0, "snapshot: %s", err);
+  render_draw(&c, &L, &ps, &o, err, sizeof err);
+  canvas_free(&c);
+  {
+    char *argv[] = {"mvmpm", "render", snap, "--out", out, "--width", "400",
+                    "--domain", "0,1,0,1", NULL};
+    UNIT_CHECK(render_cmd(9, argv) == 0, "mvmpm render SNAP --out --width --domain");
+  }
+  im = decode(out);
+  UNIT_CHECK(im.w == L.w && im.h == L.h, "command's image %d x %d as laid out", im.w, im.h);
+  at(&L, &o, 0.25, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == cmap_category(0), "body 0 upper left from the snapshot");
+  at(&L, &o, 0.75, 0.25, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == cmap_category(1), "body 1 lower right from the snapshot");
+  at(&L, &o, 0.75, 0.75, &x, &y);
+  UNIT_CHECK(pix(&im, x, y) == WHITE, "background between them");
+  free(im.px);
+  {
+    char *a1[] = {"mvmpm", "render", snap, "--by", "gradv.xx", "--out", out, NULL};
+    char *a2[] = {"mvmpm", "render", "/nonexistent-dir-mvmpm/s.h5", NULL};
+    char *a3[] = {"mvmpm", "render", snap, "--range", "2,1", NULL};
+    char *a4[] = {"mvmpm", "render", snap, "--bogus", NULL};
+    char *a5[] = {"mvmpm", "render", snap, "--by", "sdiff", "--out", out, NULL};
+    UNIT_CHECK(render_cmd(7, a1) == 1, "a field the snapshot lacks: status 1");
+    UNIT_CHECK(render_cmd(3, a2) == 1, "a missing snapshot: status 1");
+    UNIT_CHECK(render_cmd(5, a3) == 2, "a range with hi < lo: status 2");
+    UNIT_CHECK(render_cmd(4, a4) == 2, "an unknown option: status 2");
+    UNIT_CHECK(render_cmd(7, a5) == 0, "--by sdiff from a snapshot");
+  }
+  particles_free(&ps);
+}
+
+int main(int argc, char **argv) {
+  snprintf(dir, sizeof dir, "%s", argc > 1 ? argv[1] : "/tmp/mvmpm_png_XXXXXX");
+  if (argc < 2 && !mkdtemp(dir)) { perror("mkdtemp"); return 2; }
+  test_png_roundtrip();
+  test_png_unwritable();
+  test_render_body();
+  test_render_scalar();
+  test_values();
+  test_deterministic();
+  test_cmaps();
+  test_font();
+  test_axis();
+  test_plot();
+  test_render_cmd();
+  if (argc < 2) {
+    const char *names[] = {"rgb.png", "rgba.png", "plainfile", "keep.png", "body.png",
+                           "mass.png", "plot.png", "snap.h5", "snap.png", NULL};
+    char p[512];
+    int k;
+    for (k = 0; names[k]; k++) { path(p, sizeof p, names[k]); unlink(p); }
+    rmdir(dir);
+  }
+  UNIT_END("test_png");
+}

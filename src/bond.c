@@ -2,32 +2,31 @@
 ** bond.c - interfacial bond strength between the grid and the particles.
 **
 ** Each particle of a bonding body carries a bond strength b_p (field
-** "bond", a stress).  Before contact, every shared slot of field r gets
-** the mass-weighted strength of r's particles around it and their
-** volume gradient,
-**   b_r = sum_p S_ip m_p b_p / m_r,   a_r = sum_p V_p grad S_ip
-** where |a_r| is the area of r's surface the node stands for (by the
+** "bond", a stress): its share of the interface's strength belongs to the
+** grid node nearest to it.  Before contact, every shared slot of field r
+** gets the strength of the particles of r it owns (mass-weighted), and
+** r's volume gradient
+**   a_r = sum_p V_p grad S_ip
+** whose length is the area of r's surface the node stands for (by the
 ** divergence theorem, the integral of S_i over r's surface); contact.c
 ** compares the traction the bond carries with the smaller strength of
-** the two sides.  Where contact cut a node's strength to zero (the normal
-** traction exceeded it), the cut is interpolated back to the particles
-** over the interface nodes they touch:
-**   b_p <- b_p (1 - sum_{i cut} S_ip / sum_{i shared} S_ip)
-** so a particle whose interface nodes have all debonded has no strength
-** left, damage shows on the particles, and no node it reaches can bond
-** again.  (Interpolating the nodal value itself, b_p -= sum S_ip b_i,
-** would leave a particle with a small weight on the interface most of
-** its strength, the next step's nodal strength would be positive again,
-** and an interface that has let go could bond again as soon as its
-** traction fell: healing and chatter.)
+** the two sides.  A node that owns none of r's particles (a sliver of the
+** body reaching it) takes the weighted mean of those that reach it.
 **
-** Removing the whole nodal strength at once is deliberate: a strength
+** Where contact cut a node's strength (the traction exceeded it), the
+** particles the node owns lose all their strength: damage shows on the
+** particles, and a node that has let go cannot bond again, so nothing
+** heals.  Removing the whole of it at once is deliberate: a strength
 ** criterion without a softening law has no length or energy scale by
-** which to spread the loss over steps; cutting it at once makes the
-** interface let go where it is overloaded, and the debond front then
-** moves as fast as the elastic waves carry the load to the next node.
-** Only particles beside shared nodes are visited.
+** which to spread the loss over steps.  Why ownership rather than
+** interpolation with the weights S_ip: a particle reaches two or more
+** interface nodes, and taking from it in proportion to a cut neighbour's
+** weight weakened the next node's strength at once, so debonding ran
+** along the interface a node per step (four times c_L at cfl 0.25),
+** whatever the load; with ownership a node's strength changes only when
+** it is cut itself.
 */
+#include <math.h>
 #include "sim.h"
 #include "stencil.h"
 
@@ -41,6 +40,20 @@ static void eval(const sim *s, const double *x, stencil *st) {
   }
 }
 
+/* the node nearest to x: the one whose share of the interface the
+** particle's bond is */
+static int32_t nearest(const grid *g, const double *x) {
+  int32_t node = 0, stride = 1;
+  int d;
+  for (d = 0; d < DIM; d++) {
+    int i = (int)floor((x[d] - g->lo[d]) * g->inv_h + 0.5) +
+            (g->periodic[d] ? 0 : g->pad);
+    node += stride * grid_wrap(g, d, i);
+    stride *= g->n[d];
+  }
+  return node;
+}
+
 void bond_gather(sim *s) {
   grid *g = &s->g;
   const particles *ps = &s->ps;
@@ -50,7 +63,7 @@ void bond_gather(sim *s) {
   size_t i, k;
   for (i = 0; i < ps->n; i++) {
     double x[DIM], mp = ps->m[i], V;
-    int32_t node[STENCIL_MAX], f = bd[ps->body[i]].field;
+    int32_t node[STENCIL_MAX], f = bd[ps->body[i]].field, own;
     int nn, d, any = 0;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     nn = stencil_nodes(g, s->shape, x, node);
@@ -67,8 +80,19 @@ void bond_gather(sim *s) {
       g->sb[sl] += st.w[k] * mp * bp[i];
       for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
     }
+    own = nearest(g, x);
+    if (g->head[own] >= 0) {
+      int32_t sl = grid_slot(g, own, f);
+      g->sbo[sl] += mp * bp[i];
+      g->smo[sl] += mp;
+    }
   }
-  for (k = 0; k < g->nslot; k++) g->sb[k] *= g->sm[k] > 0 ? 1.0 / g->sm[k] : 0.0;
+  /* a node's strength is that of the particles it owns; a node owning
+  ** none of the field (a sliver of the body reaching it) takes the
+  ** weighted mean of the particles that reach it */
+  for (k = 0; k < g->nslot; k++)
+    g->sb[k] = g->smo[k] > 0 ? g->sbo[k] / g->smo[k]
+               : g->sm[k] > 0 ? g->sb[k] / g->sm[k] : 0.0;
 }
 
 void bond_scatter(sim *s) {
@@ -76,23 +100,18 @@ void bond_scatter(sim *s) {
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   double *bp = particles_comp(ps, s->fbond, 0);
-  stencil st;
   size_t i;
   for (i = 0; i < ps->n; i++) {
-    double x[DIM], wsh = 0, wcut = 0;
-    int32_t f = bd[ps->body[i]].field;
-    int k, d;
+    double x[DIM];
+    int32_t own;
+    int d;
     if (!(bp[i] > 0)) continue;
     /* called before g2p: the particles sit where they were gathered */
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    eval(s, x, &st);
-    for (k = 0; k < st.n; k++) {
-      int32_t n = st.node[k];
-      if (g->head[n] < 0) continue;
-      wsh += st.w[k];
-      if (g->scut[grid_slot(g, n, f)] > 0) wcut += st.w[k];
-    }
-    if (wcut > 0) bp[i] = wcut >= wsh ? 0.0 : bp[i] * (1.0 - wcut / wsh);
+    own = nearest(g, x);
+    if (g->head[own] >= 0 &&
+        g->scut[grid_slot(g, own, bd[ps->body[i]].field)] > 0)
+      bp[i] = 0.0;
   }
 }
 

@@ -104,7 +104,10 @@ static double traction(const grid *g, int32_t n, int32_t sl, int drv) {
       j = jx + g->n[0] * jy;
       if (g->head[j] < 0) continue;
       for (q = g->head[j]; q >= 0 && g->sfield[q] != f; q = g->snext[q]) {}
-      if (q < 0 || !(g->m[j] > 0)) continue;
+      /* only the interface still bonded: a debonded node's "needed
+      ** force" is no load the bond carries, and counting it would pass
+      ** its release on to the neighbours at once, two cells per step */
+      if (q < 0 || !(g->m[j] > 0) || !(g->sb[q] > 0)) continue;
       F += bondforce(g, j, q, drv);
       A += area(g, q);
     }
@@ -194,6 +197,7 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
         csum[d] += c[k][d];
       }
       g->sbonded[sl] = 1;
+      s->bond_area += 0.5 * area(g, sl);
       continue;
     }
     if (!(dn > 0)) continue;
@@ -242,5 +246,6 @@ void contact_apply(sim *s) {
   grid *g = &s->g;
   size_t k;
   s->ncut = 0;
+  s->bond_area = 0;
   for (k = 0; k < g->nshared; k++) node(s, g->shared[k], g->q, g->sq);
 }

@@ -56,6 +56,7 @@ static void slots_free(grid *g) {
   int d;
   free(g->snext); free(g->sfield); free(g->snode); free(g->sm);
   free(g->sext); free(g->sb); free(g->scut); free(g->sbonded);
+  free(g->sbo); free(g->smo);
   for (d = 0; d < DIM; d++) free(g->sv[d]);
   for (d = 0; d < DIM; d++) {
     free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
@@ -104,6 +105,7 @@ static int slots_grow(grid *g) {
   GROW(g->sext, double, cap);
   GROW(g->sb, double, cap); GROW(g->scut, double, cap);
   GROW(g->sbonded, unsigned char, cap);
+  GROW(g->sbo, double, cap); GROW(g->smo, double, cap);
   for (d = 0; d < DIM; d++) GROW(g->sv[d], double, cap);
   for (d = 0; d < DIM; d++) {
     GROW(g->sp[d], double, cap); GROW(g->sf[d], double, cap);
@@ -127,6 +129,7 @@ static int32_t slot_new(grid *g, int32_t node, int32_t field) {
   g->sext[s] = -1e300;
   g->sb[s] = g->scut[s] = 0;
   g->sbonded[s] = 0;
+  g->sbo[s] = g->smo[s] = 0;
   for (d = 0; d < DIM; d++) g->sv[d][s] = 0;
   for (d = 0; d < DIM; d++) {
     g->sp[d][s] = g->sf[d][s] = g->sq[d][s] = g->sg[d][s] = 0;

@@ -43,6 +43,8 @@ typedef struct grid {
   ** (whose length is the interface area the node stands for), and the
   ** strength a debonding removed */
   double *sb, *sv[DIM], *scut;
+  double *sbo, *smo;   /* strength x mass, and mass, of the particles whose
+                          nearest node this is (bond.c) */
   unsigned char *sbonded; /* bonded this step: moves with the node */
   /* list of shared nodes */
   size_t nshared, sharedcap;

@@ -389,6 +389,7 @@ static int lenergy(lua_State *L) {
   setnum(L, "residual", sim_residual(s));
   lua_pushinteger(L, (lua_Integer)s->ncut_total);
   lua_setfield(L, -2, "debonded");
+  setnum(L, "bonded_area", s->bond_area);
   setnum(L, "px", s->e.mom[0]);
   setnum(L, "py", s->e.mom[1]);
   setnum(L, "angmom", s->e.angmom);

@@ -45,7 +45,7 @@ static int mkdirs(const char *path, char *err, size_t errlen) {
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
     "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
-    "debonded"};
+    "debonded", "bonded_area"};
 #define NCOLS (int)(sizeof cols / sizeof cols[0])
 
 static void csv_row(lua_State *L, lsim *ls) {
@@ -59,7 +59,7 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[11] = sim_residual(s);
   v[12] = s->e.mom[0]; v[13] = s->e.mom[1]; v[14] = s->e.angmom;
   v[15] = s->e.jmin; v[16] = s->e.jmax; v[17] = (double)s->ps.n;
-  v[18] = (double)s->ncut_total;
+  v[18] = (double)s->ncut_total; v[19] = s->bond_area;
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 

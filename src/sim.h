@@ -88,6 +88,8 @@ typedef struct sim {
   int fbond;         /* particle field "bond" (strength), -1: no bonds */
   size_t ncut;       /* interface slots debonded in the last step */
   size_t ncut_total; /* ... since the start */
+  double bond_area;  /* bonded interface area in the last step (length in
+                        2-D), each interface counted once */
   int gap_check;     /* contact only once material surfaces meet */
   double mcut;       /* nodal masses below this are empty */
   int sort_every;    /* steps between sorts by cell */

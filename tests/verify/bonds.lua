@@ -92,8 +92,8 @@ V.above("interface opening after debonding / cell", open / h, 0.1)
 V.below("|mean stress xx in A over one ringing period| / strength", math.abs(ssum / sn) / 0.01, 0.2)
 V.info("stress xx in A at t = 10.5 / strength (ringing)", sxx / 0.01)
 V.near("stress xx in A just before (t = 6.5) / (K + 4G/3) u", s65 / (M * u(6.5)), 1, 0.02)
--- damage: the particles within a cell of the interface lost their
--- strength, the rest kept it
+-- damage: the particles whose nearest node is on the interface (within
+-- half a cell of it) lost their strength, the rest kept it
 do
   local body, bond, id = d.sim:particles("body"), d.sim:particles("bond"), d.sim:particles("id")
   local near, nearlost, far, farkept = 0, 0, 0, 0
@@ -101,12 +101,12 @@ do
     if body[i] == 2 or body[i] == 3 then
       if b65[id[i]] > 0 then
         local dist = math.abs(x0[id[i]] - 1.5)
-        if dist < h then near = near + 1; nearlost = nearlost + (bond[i] == 0 and 1 or 0)
+        if dist < h / 2 then near = near + 1; nearlost = nearlost + (bond[i] == 0 and 1 or 0)
         elseif dist > 2 * h then far = far + 1; farkept = farkept + (bond[i] == 1 and 1 or 0) end
       end
     end
   end
-  V.near("particles within a cell of the interface debonded (fraction)", nearlost / near, 1, 0)
+  V.near("particles within half a cell of the interface debonded (fraction)", nearlost / near, 1, 0)
   V.near("particles beyond two cells keep their strength (fraction)", farkept / far, 1, 0)
 end
 V.holds("no healing: nodes cut once, none again after the interface opened",

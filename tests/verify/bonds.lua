@@ -119,3 +119,25 @@ z.sim:run(3)
 local sz, oz = probe(z.sim)
 V.near("interface opening at t = 3 / both grips' travel 2 u", oz / (2 * u(3)), 1, 0.2)
 V.below("|stress xx in A| at t = 3 / what a bonded pair carries", math.abs(sz) / (M * u(3)), 0.5)
+
+V.case "a debond front along a loaded interface (scenarios/debond_front.lua)"
+do
+  local cR = 0.6542   -- plane strain, K the 3-D bulk modulus (docs/algorithm.md)
+  local sim = mvmpm.load("scenarios/debond_front.lua", {cells = 16})
+  sim:run(12.9)
+  local A0 = sim:energy().bonded_area
+  -- debonded length of the A-B interface against time, after the release
+  local ts, ls = {}, {}
+  sim:every {steps = 1, fn = function(s)
+    if s.t > 13.5 then ts[#ts + 1], ls[#ls + 1] = s.t, A0 - s:energy().bonded_area end
+  end}
+  sim:run(17.5)
+  -- least-squares slope: the front's speed
+  local n, st, sl, stt, stl = #ts, 0, 0, 0, 0
+  for i = 1, n do st, sl = st + ts[i], sl + ls[i]; stt, stl = stt + ts[i]^2, stl + ts[i] * ls[i] end
+  local speed = (n * stl - st * sl) / (n * stt - st * st)
+  V.info("front speed (length of interface debonded per time)", speed)
+  V.below("front speed / c_R (must not exceed 1)", speed / cR, 1.0)
+  V.above("front speed / c_R (a front runs: > 0.5)", speed / cR, 0.5)
+  V.above("debonded length at t = 17.5 (of 2.5, the seed included)", ls[n], 1.5)
+end

@@ -70,6 +70,12 @@ void grid_free(grid *g) {
   memset(g, 0, sizeof *g);
 }
 
+size_t grid_mem(const grid *g) {
+  size_t dense = g->nnodes * ((1 + 3 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
+  size_t slot = g->slotcap * (3 * sizeof(int32_t) + (2 + 5 * DIM) * sizeof(double));
+  return dense + slot + g->sharedcap * sizeof(int32_t);
+}
+
 void grid_reset(grid *g, int musl) {
   size_t n = g->nnodes * sizeof(double), k;
   int d;

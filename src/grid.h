@@ -50,6 +50,8 @@ void grid_free(grid *g);
 /* bytes the grid needs before any slot, for refusing oversize scenes */
 double grid_bytes(const double lo[DIM], const double hi[DIM], double h,
                   int pad);
+/* bytes the grid holds now: dense arrays, slot pool, shared list */
+size_t grid_mem(const grid *g);
 /* clear the dense arrays and the slot table for a new step */
 void grid_reset(grid *g, int musl);
 /* the slot of field f at node, creating it; -1 if out of memory */

@@ -185,3 +185,11 @@ size_t particles_compact(particles *ps, const unsigned char *keep) {
   ps->n = j;
   return j;
 }
+
+size_t particles_mem(const particles *ps) {
+  size_t arrays = 1; /* the scratch buffer */
+  int f;
+  for (f = 0; f < ps->nfields; f++) arrays += (size_t)ps->fields[f].ncomp;
+  return ps->cap * (arrays * 8 + sizeof *ps->perm) +
+         ps->ncount * sizeof *ps->count;
+}

@@ -71,6 +71,8 @@ static inline void *particles_comp(const particles *ps, int f, int c) {
 size_t particles_push(particles *ps);
 /* stable counting sort by cell index (key[i] in [0, ncell)) */
 int particles_sort(particles *ps, const int32_t *key, size_t ncell);
+/* bytes the store holds: every array at capacity, and the sort buffers */
+size_t particles_mem(const particles *ps);
 /* drop particles with keep[i] == 0, keeping order */
 size_t particles_compact(particles *ps, const unsigned char *keep);
 

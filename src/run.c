@@ -231,7 +231,9 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   simidx = lua_absindex(L, simidx);
   if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
   out_start(L, ls);
-  while ((max_steps < 0 || k < max_steps) && s->t < t_end - 1e-12 * (1 + fabs(t_end))) {
+  /* sim:step(n) passes t_end = HUGE_VAL: the tolerance must not make it NaN */
+  while ((max_steps < 0 || k < max_steps) &&
+         (isinf(t_end) || s->t < t_end - 1e-12 * (1 + fabs(t_end)))) {
     if (ls->drives || ls->sidefns) drives(L, simidx, ls);
     if (sim_step(s)) luaL_error(L, "%s", s->err);
     k++;

@@ -6,7 +6,7 @@ sim:energy()         kinetic, strain, dissipated, boundary_work, total, residual
 sim:bodies()         the bodies; b:diag(), b:centroid(), b:velocity(), b:omega(), b:mass()
 sim:particles(name)  copy of a particle field (sim:particles() lists them)
 sim:snapshot(path)   write an HDF5 snapshot now
-sim.t sim.dt sim.step sim.n   time, step size, step count, particle count
+sim.t sim.dt sim.steps sim.n  time, step size, step count, particle count
 sim.flip = f  sim.cfl = c  sim.dt = d  sim.friction = mu   change settings between steps
 Ctrl-C stops running steps; Ctrl-D leaves.]]
 function help() print(text) end

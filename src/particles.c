@@ -172,15 +172,18 @@ int particles_sort(particles *ps, const int32_t *key, size_t ncell) {
 size_t particles_compact(particles *ps, const unsigned char *keep) {
   size_t i, j;
   int f, c;
-  for (f = 0; f < ps->nfields; f++)
+  for (f = 0; f < ps->nfields; f++) {
+    /* arrays hold cap * 8 bytes, but int32 ones are indexed by 4 */
+    size_t sz = ps->fields[f].type == PF_INT32 ? 4 : 8;
     for (c = 0; c < ps->fields[f].ncomp; c++) {
       char *a = *ps->fields[f].slot[c];
       for (i = j = 0; i < ps->n; i++)
         if (keep[i]) {
-          if (i != j) memcpy(a + j * 8, a + i * 8, 8);
+          if (i != j) memcpy(a + j * sz, a + i * sz, sz);
           j++;
         }
     }
+  }
   for (i = j = 0; i < ps->n; i++) j += keep[i] != 0;
   ps->n = j;
   return j;

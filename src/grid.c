@@ -76,14 +76,14 @@ size_t grid_mem(const grid *g) {
   return dense + slot + g->sharedcap * sizeof(int32_t);
 }
 
-void grid_reset(grid *g, int musl) {
+void grid_reset(grid *g, int clear_q) {
   size_t n = g->nnodes * sizeof(double), k;
   int d;
   memset(g->m, 0, n);
   for (d = 0; d < DIM; d++) {
     memset(g->p[d], 0, n);
     memset(g->f[d], 0, n);
-    if (musl) memset(g->q[d], 0, n);
+    if (clear_q) memset(g->q[d], 0, n);
   }
   memset(g->owner, 0xff, g->nnodes * sizeof(int32_t));
   /* only shared nodes carry slot heads; clear just those */

@@ -256,7 +256,7 @@ int sim_step(sim *s) {
   int musl = s->update == UPDATE_MUSL;
   if (!s->started && start(s)) return -1;
   s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
-  grid_reset(&s->g, musl);
+  grid_reset(&s->g, 0);
   if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
@@ -274,8 +274,7 @@ int sim_step(sim *s) {
     ** what the particles do; a second wall or contact projection here
     ** would strain particles by motion their momentum never lost, which
     ** measurably creates energy at impacts */
-    p2g_momentum(s);
-    solve_remap(s);
+    solve_remap(s); /* g2p mapped the updated momenta back */
     g2p_remap(s);
   }
   if (constitutive(s)) return -1;

@@ -19,27 +19,43 @@ typedef struct sums {
   size_t out;
 } sums;
 
+/* the domain as settle needs it, copied into a local like stencil_geo */
+typedef struct box {
+  double lo[DIM], hi[DIM], inv_h;
+  int32_t cells[DIM];
+  int periodic[DIM];
+} box;
+
+STENCIL_INLINE void box_init(box *bx, const grid *g) {
+  int d;
+  bx->inv_h = g->inv_h;
+  for (d = 0; d < DIM; d++) {
+    bx->lo[d] = g->lo[d];
+    bx->hi[d] = g->hi[d];
+    bx->cells[d] = g->cells[d];
+    bx->periodic[d] = g->periodic[d];
+  }
+}
+
 /* after the move: wrap, domain check, cell, sums */
-STENCIL_INLINE void settle(sim *s, size_t i, sums *u) {
-  const grid *g = &s->g;
-  particles *ps = &s->ps;
+STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
   double m = ps->m[i], v2 = 0;
   int32_t cell = 0, stride = 1;
   int d;
   for (d = 0; d < DIM; d++) {
     double x = ps->x[d][i], r;
-    if (g->periodic[d]) {
-      double L = g->hi[d] - g->lo[d];
-      if (x >= g->hi[d]) x -= L;
-      else if (x < g->lo[d]) x += L;
+    if (bx->periodic[d]) {
+      double L = bx->hi[d] - bx->lo[d];
+      if (x >= bx->hi[d]) x -= L;
+      else if (x < bx->lo[d]) x += L;
       ps->x[d][i] = x;
     }
     /* r >= 0 once x >= lo, so the cell is (int) r; r < cells also
     ** catches x just below hi rounding up to the next cell */
-    r = (x - g->lo[d]) * g->inv_h;
-    if (!(x >= g->lo[d] && x < g->hi[d] && r < g->cells[d])) cell = -1;
+    r = (x - bx->lo[d]) * bx->inv_h;
+    if (!(x >= bx->lo[d] && x < bx->hi[d] && r < bx->cells[d])) cell = -1;
     else if (cell >= 0) cell += stride * (int32_t)r;
-    stride *= g->cells[d];
+    stride *= bx->cells[d];
     v2 += ps->v[d][i] * ps->v[d][i];
     u->mom[d] += m * ps->v[d][i];
   }
@@ -73,10 +89,14 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double dt = s->dt, flip = s->flip, pic = 1.0 - flip;
+  const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
+  stencil_geo geo;
+  box bx;
   stencil st;
   sums u = {0};
   size_t i;
+  stencil_geo_init(&geo, g);
+  box_init(&bx, g);
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, ax = 0, ay = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
@@ -84,7 +104,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     const body *b = &bd[ps->body[i]];
     int32_t slot[STENCIL_MAX];
     int k;
-    stencil_eval(g, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], qx, qy, fx, fy;
@@ -119,7 +139,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       ps->L[2][i] = l10; ps->L[3][i] = l11;
       ps->x[0][i] = x[0] + dt * vx;
       ps->x[1][i] = x[1] + dt * vy;
-      settle(s, i, &u);
+      settle(&bx, ps, i, &u);
     } else {
       const double mp = ps->m[i];
       for (k = 0; k < st.n; k++) {
@@ -155,16 +175,20 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
   const grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double dt = s->dt;
+  const double dt = s->dt, lp = s->lp;
+  stencil_geo geo;
+  box bx;
   stencil st;
   sums u = {0};
   size_t i;
+  stencil_geo_init(&geo, g);
+  box_init(&bx, g);
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     int32_t f = bd[ps->body[i]].field;
     int k;
-    stencil_eval(g, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k], ux, uy, qx, qy;
@@ -184,7 +208,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
     ps->L[2][i] = l10; ps->L[3][i] = l11;
     ps->x[0][i] = x[0] + dt * vx;
     ps->x[1][i] = x[1] + dt * vy;
-    settle(s, i, &u);
+    settle(&bx, ps, i, &u);
   }
   finish(s, &u);
 }

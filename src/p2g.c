@@ -38,8 +38,14 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double gx = s->gravity[0], gy = s->gravity[1], lp = s->lp;
+  /* distinct arrays: restrict lets the compiler keep loads ahead of
+  ** stores to the other arrays */
+  double *restrict gm = g->m, *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
+  stencil_geo geo;
   stencil st;
   size_t i;
+  stencil_geo_init(&geo, g);
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double mp = ps->m[i], vx = ps->v[0][i], vy = ps->v[1][i];
@@ -49,18 +55,18 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
     double sxy = V * ps->s[S_XY][i];
     int32_t f = bd[ps->body[i]].field;
     int k;
-    stencil_eval(g, kind, x, lp, &st);
+    stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k];
       double wm = w * mp;
       double fx = wm * gx - (sxx * dx + sxy * dy);
       double fy = wm * gy - (sxy * dx + syy * dy);
-      g->m[n] += wm;
-      g->p[0][n] += wm * vx;
-      g->p[1][n] += wm * vy;
-      g->f[0][n] += fx;
-      g->f[1][n] += fy;
+      gm[n] += wm;
+      gpx[n] += wm * vx;
+      gpy[n] += wm * vy;
+      gfx[n] += fx;
+      gfy[n] += fy;
       if (shared && g->head[n] >= 0) {
         int32_t sl = grid_slot(g, n, f);
         g->sm[sl] += wm;

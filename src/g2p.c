@@ -90,6 +90,10 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
+  /* the dense grid only through these: loads need not wait for stores */
+  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
+  const double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
+  double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
   stencil_geo geo;
   box bx;
   stencil st;
@@ -114,8 +118,8 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
         fx = g->sf[0][sl]; fy = g->sf[1][sl];
       } else {
         if (shared) slot[k] = -1;
-        qx = g->q[0][n]; qy = g->q[1][n];
-        fx = g->f[0][n]; fy = g->f[1][n];
+        qx = gqx[n]; qy = gqy[n];
+        fx = gfx[n]; fy = gfy[n];
       }
       vx += w * qx; vy += w * qy;
       ax += w * fx; ay += w * fy;
@@ -145,8 +149,8 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       for (k = 0; k < st.n; k++) {
         int32_t n = st.node[k];
         double wm = st.w[k] * mp;
-        g->p[0][n] += wm * nvx;
-        g->p[1][n] += wm * nvy;
+        gpx[n] += wm * nvx;
+        gpy[n] += wm * nvy;
         if (shared && slot[k] >= 0) {
           g->sp[0][slot[k]] += wm * nvx;
           g->sp[1][slot[k]] += wm * nvy;
@@ -176,6 +180,8 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double dt = s->dt, lp = s->lp;
+  const double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
   stencil_geo geo;
   box bx;
   stencil st;
@@ -197,8 +203,8 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
         ux = g->sp[0][sl]; uy = g->sp[1][sl];
         qx = g->sq[0][sl]; qy = g->sq[1][sl];
       } else {
-        ux = g->p[0][n]; uy = g->p[1][n];
-        qx = g->q[0][n]; qy = g->q[1][n];
+        ux = gpx[n]; uy = gpy[n];
+        qx = gqx[n]; qy = gqy[n];
       }
       vx += w * qx; vy += w * qy;
       l00 += ux * dx; l01 += ux * dy;

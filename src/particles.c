@@ -98,6 +98,21 @@ int particles_reserve(particles *ps, size_t cap) {
   return 0;
 }
 
+/* A shrink that fails leaves the array's larger block in place, which
+** is as good: every array only has to hold at least cap entries. */
+void particles_fit(particles *ps) {
+  size_t cap = ps->n ? ps->n : 1;
+  int f, c;
+  void *p;
+  if (cap >= ps->cap) return;
+  for (f = 0; f < ps->nfields; f++)
+    for (c = 0; c < ps->fields[f].ncomp; c++)
+      if ((p = realloc(*ps->fields[f].slot[c], cap * 8))) *ps->fields[f].slot[c] = p;
+  if ((p = realloc(ps->scratch, cap * 8))) ps->scratch = p;
+  if ((p = realloc(ps->perm, cap * sizeof(size_t)))) ps->perm = p;
+  ps->cap = cap;
+}
+
 int particles_add_field(particles *ps, const char *name, int ncomp,
                         int type, const char *unit, unsigned flags) {
   int f = particles_find(ps, name);

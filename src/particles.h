@@ -58,6 +58,8 @@ void particles_init(particles *ps);
 void particles_free(particles *ps);
 /* make room for at least cap particles; 0 on success, -1 out of memory */
 int particles_reserve(particles *ps, size_t cap);
+/* give back the capacity beyond n (seeding grows it by doubling) */
+void particles_fit(particles *ps);
 /* register a run-time field (zero filled); returns its index or -1 */
 int particles_add_field(particles *ps, const char *name, int ncomp,
                         int type, const char *unit, unsigned flags);

@@ -239,12 +239,13 @@ static void housekeeping(sim *s) {
 }
 
 static int start(sim *s) {
-  const particles *ps = &s->ps;
+  particles *ps = &s->ps;
   double mmin = 1e300;
   size_t i;
   for (i = 0; i < ps->n; i++)
     if (ps->m[i] < mmin) mmin = ps->m[i];
   s->mcut = ps->n ? s->mcut_rel * mmin : 0;
+  particles_fit(&s->ps); /* bodies are all added: drop the seeding slack */
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain;
   s->e.jmin = s->e.jmax = 1;

@@ -59,8 +59,28 @@ static void sort(void) {
   particles_free(&ps);
 }
 
+/* giving back the spare capacity keeps the data, and the store grows
+** again afterwards */
+static void fit(void) {
+  particles ps;
+  size_t k;
+  fill(&ps);
+  UNIT_CHECK(ps.cap > ps.n, "seeding leaves spare capacity (cap %zu, n %zu)", ps.cap, ps.n);
+  particles_fit(&ps);
+  UNIT_CHECK(ps.cap == NP && consistent(&ps), "fit: cap = n, data kept");
+  k = particles_push(&ps);
+  ps.x[0][k] = (double)NP;
+  ps.x[1][k] = -(double)NP;
+  ps.body[k] = 3 * NP;
+  ps.cell[k] = (7 * NP) % 13;
+  UNIT_CHECK(ps.n == NP + 1 && ps.cap > NP && consistent(&ps), "push after fit");
+  UNIT_CHECK(particles_sort(&ps, ps.cell, 13) == 0 && consistent(&ps), "sort after fit");
+  particles_free(&ps);
+}
+
 int main(void) {
   compact();
   sort();
+  fit();
   UNIT_END("test_particles");
 }

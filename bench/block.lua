@@ -33,19 +33,17 @@ for _, c in ipairs(cases) do
     "M p-st/s", string.format("%d particles, %.1f ms/step, median of %d x %d steps",
       sim.n, 1e3 * sec, B.reps, n))
   if c[1] == "linear" and c[2] == "musl" then
-    local mem, n = sim.memory, sim.n
+    local mem, np = sim.memory, sim.n
     local rss1 = B.rss()
-    B.line("memory", "(d) particle arrays / particle (at n)", mem.particles / mem.capacity,
-      "bytes", "allocation sizes, per slot of capacity")
-    B.line("memory", "(d) particle arrays / particle (allocated)", mem.particles / n,
-      "bytes", string.format("capacity %d for %d particles", mem.capacity, n))
-    B.line("memory", "(d) grid / particle", mem.grid / n, "bytes",
-      "dense node arrays and slot pool")
-    B.line("memory", "(d) total allocated / particle", (mem.particles + mem.grid) / n,
+    B.line("memory", "(d) particle store / particle", mem.particles / np, "bytes",
+      string.format("allocation sizes: arrays and sort buffers, capacity %d", mem.capacity))
+    B.line("memory", "(d) grid / particle", mem.grid / np, "bytes",
+      "allocation sizes: dense node arrays and slot pool")
+    B.line("memory", "(d) total allocated / particle", (mem.particles + mem.grid) / np,
       "bytes")
     if rss0 and rss1 then
-      B.line("memory", "(d) VmRSS growth / particle", (rss1 - rss0) / n, "bytes",
-        "cross-check; includes the seeding lattice and Lua garbage")
+      B.line("memory", "(d) VmRSS growth / particle", (rss1 - rss0) / np, "bytes",
+        "upper bound: adds the seeding lattice and buffers, Lua garbage")
     end
   end
   sim = nil

@@ -4,7 +4,8 @@
 # Each bench/*.lua script is a plain Lua script run with `BIN test FILE`
 # (that command runs any Lua file with the mvmpm module loaded and writes
 # no output files); the scripts print one line per figure:
-#   rate       particle-steps per second (particles x steps / wall seconds)
+#   rate       particle-steps per second (particles x steps / wall seconds),
+#              in M p-st/s: millions of particle-steps per second
 #   ratio      a ratio of two timings
 #   memory     bytes per particle
 #   reference  the same problem in other MPM codes, for scale

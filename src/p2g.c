@@ -10,12 +10,15 @@
 #include "stencil.h"
 
 /* Shared nodes: a node is shared when particles of two fields reach it.
-** The first field seen owns the node; the second creates slots. */
+** The first field seen owns the node; the second creates slots.  The
+** first node fixes the whole stencil, and particles sorted by cell come
+** in runs with the same first node and field: marking again is a no-op,
+** so a run is marked once. */
 int p2g_mark(sim *s) {
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
-  int32_t node[STENCIL_MAX];
+  int32_t node[STENCIL_MAX], last = -1, lastf = -1;
   size_t i;
   for (i = 0; i < ps->n; i++) {
     int32_t f = bd[ps->body[i]].field;
@@ -23,6 +26,9 @@ int p2g_mark(sim *s) {
     int k, nn, d;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     nn = stencil_nodes(g, s->shape, x, node);
+    if (node[0] == last && f == lastf) continue;
+    last = node[0];
+    lastf = f;
     for (k = 0; k < nn; k++) {
       int32_t o = g->owner[node[k]];
       if (o == f) continue;

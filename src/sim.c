@@ -245,7 +245,7 @@ static int start(sim *s) {
   for (i = 0; i < ps->n; i++)
     if (ps->m[i] < mmin) mmin = ps->m[i];
   s->mcut = ps->n ? s->mcut_rel * mmin : 0;
-  particles_fit(&s->ps); /* bodies are all added: drop the seeding slack */
+  particles_fit(ps); /* bodies are all added: drop the seeding slack */
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain;
   s->e.jmin = s->e.jmax = 1;

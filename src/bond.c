@@ -33,10 +33,12 @@
 /* the stencil with the shape kind a constant in each branch (which also
 ** lets the compiler see every weight written) */
 static void eval(const sim *s, const double *x, stencil *st) {
+  stencil_geo geo;
+  stencil_geo_init(&geo, &s->g);
   switch (s->shape) {
-  case SHAPE_GIMP: stencil_eval(&s->g, SHAPE_GIMP, x, s->lp, st); break;
-  case SHAPE_BSPLINE2: stencil_eval(&s->g, SHAPE_BSPLINE2, x, s->lp, st); break;
-  default: stencil_eval(&s->g, SHAPE_LINEAR, x, s->lp, st);
+  case SHAPE_GIMP: stencil_eval(&geo, SHAPE_GIMP, x, s->lp, st); break;
+  case SHAPE_BSPLINE2: stencil_eval(&geo, SHAPE_BSPLINE2, x, s->lp, st); break;
+  default: stencil_eval(&geo, SHAPE_LINEAR, x, s->lp, st);
   }
 }
 

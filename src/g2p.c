@@ -4,7 +4,7 @@
 **   x_p <- x_p + dt sum_i S_ip vL_i
 **   L_p  = sum_i v_i (x) grad S_ip
 ** with v_i = vL_i (USL) or, for MUSL, the velocities of the particles'
-** updated momenta mapped back to the grid (p2g_momentum), which are
+** updated momenta mapped back to the grid (the first pass), which are
 ** mass-weighted averages of particle velocities and so bounded even at
 ** nearly empty nodes.  The pass that moves the particles also sums the
 ** kinetic energy and momenta, wraps periodic positions, marks particles
@@ -19,30 +19,43 @@ typedef struct sums {
   size_t out;
 } sums;
 
+/* the domain as settle needs it, copied into a local like stencil_geo */
+typedef struct box {
+  double lo[DIM], hi[DIM], inv_h;
+  int32_t cells[DIM];
+  int periodic[DIM];
+} box;
+
+STENCIL_INLINE void box_init(box *bx, const grid *g) {
+  int d;
+  bx->inv_h = g->inv_h;
+  for (d = 0; d < DIM; d++) {
+    bx->lo[d] = g->lo[d];
+    bx->hi[d] = g->hi[d];
+    bx->cells[d] = g->cells[d];
+    bx->periodic[d] = g->periodic[d];
+  }
+}
+
 /* after the move: wrap, domain check, cell, sums */
-STENCIL_INLINE void settle(sim *s, size_t i, sums *u) {
-  const grid *g = &s->g;
-  particles *ps = &s->ps;
+STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
   double m = ps->m[i], v2 = 0;
   int32_t cell = 0, stride = 1;
   int d;
   for (d = 0; d < DIM; d++) {
-    double x = ps->x[d][i];
-    int c;
-    if (g->periodic[d]) {
-      double L = g->hi[d] - g->lo[d];
-      if (x >= g->hi[d]) x -= L;
-      else if (x < g->lo[d]) x += L;
+    double x = ps->x[d][i], r;
+    if (bx->periodic[d]) {
+      double L = bx->hi[d] - bx->lo[d];
+      if (x >= bx->hi[d]) x -= L;
+      else if (x < bx->lo[d]) x += L;
       ps->x[d][i] = x;
     }
-    c = (int)floor((x - g->lo[d]) * g->inv_h);
-    if (!(x >= g->lo[d] && x < g->hi[d]) || c < 0 || c >= g->cells[d]) {
-      cell = -1;
-      stride = 0;
-    }
-    if (c >= g->cells[d]) c = g->cells[d] - 1;
-    cell += stride * c;
-    stride *= g->cells[d];
+    /* r >= 0 once x >= lo, so the cell is (int) r; r < cells also
+    ** catches x just below hi rounding up to the next cell */
+    r = (x - bx->lo[d]) * bx->inv_h;
+    if (!(x >= bx->lo[d] && x < bx->hi[d] && r < bx->cells[d])) cell = -1;
+    else if (cell >= 0) cell += stride * (int32_t)r;
+    stride *= bx->cells[d];
     v2 += ps->v[d][i] * ps->v[d][i];
     u->mom[d] += m * ps->v[d][i];
   }
@@ -64,32 +77,49 @@ static void finish(sim *s, const sums *u) {
   s->nout = u->out;
 }
 
-/* full: USL (move + gradient); otherwise velocities only (MUSL pass 1) */
+/*
+** USL: velocities, move and gradient in one pass.  MUSL pass 1:
+** velocities, and at once the particles' updated momenta mapped back to
+** the grid (into p, which solve_velocity cleared) with the same weights,
+** so the stencil is evaluated once for both; the sums into p run in the
+** particles' order either way.
+*/
 STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
                              const int full) {
-  const grid *g = &s->g;
+  grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double dt = s->dt, flip = s->flip, pic = 1.0 - flip;
+  const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
+  /* the dense grid only through these: loads need not wait for stores */
+  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
+  const double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
+  double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  stencil_geo geo;
+  box bx;
   stencil st;
   sums u = {0};
   size_t i;
+  stencil_geo_init(&geo, g);
+  box_init(&bx, g);
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, ax = 0, ay = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
+    double nvx, nvy;
     const body *b = &bd[ps->body[i]];
+    int32_t slot[STENCIL_MAX];
     int k;
-    stencil_eval(g, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], qx, qy, fx, fy;
       if (shared && g->head[n] >= 0) {
-        int32_t sl = grid_slot(g, n, b->field);
+        int32_t sl = slot[k] = grid_slot(g, n, b->field);
         qx = g->sq[0][sl]; qy = g->sq[1][sl];
         fx = g->sf[0][sl]; fy = g->sf[1][sl];
       } else {
-        qx = g->q[0][n]; qy = g->q[1][n];
-        fx = g->f[0][n]; fy = g->f[1][n];
+        if (shared) slot[k] = -1;
+        qx = gqx[n]; qy = gqy[n];
+        fx = gfx[n]; fy = gfy[n];
       }
       vx += w * qx; vy += w * qy;
       ax += w * fx; ay += w * fy;
@@ -100,18 +130,32 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       }
     }
     if (b->driven) {
-      ps->v[0][i] = b->vdrive[0];
-      ps->v[1][i] = b->vdrive[1];
+      nvx = b->vdrive[0];
+      nvy = b->vdrive[1];
     } else {
-      ps->v[0][i] = flip * (ps->v[0][i] + ax) + pic * vx;
-      ps->v[1][i] = flip * (ps->v[1][i] + ay) + pic * vy;
+      nvx = flip * (ps->v[0][i] + ax) + pic * vx;
+      nvy = flip * (ps->v[1][i] + ay) + pic * vy;
     }
+    ps->v[0][i] = nvx;
+    ps->v[1][i] = nvy;
     if (full) {
       ps->L[0][i] = l00; ps->L[1][i] = l01;
       ps->L[2][i] = l10; ps->L[3][i] = l11;
       ps->x[0][i] = x[0] + dt * vx;
       ps->x[1][i] = x[1] + dt * vy;
-      settle(s, i, &u);
+      settle(&bx, ps, i, &u);
+    } else {
+      const double mp = ps->m[i];
+      for (k = 0; k < st.n; k++) {
+        int32_t n = st.node[k];
+        double wm = st.w[k] * mp;
+        gpx[n] += wm * nvx;
+        gpy[n] += wm * nvy;
+        if (shared && slot[k] >= 0) {
+          g->sp[0][slot[k]] += wm * nvx;
+          g->sp[1][slot[k]] += wm * nvy;
+        }
+      }
     }
   }
   if (full) finish(s, &u);
@@ -135,16 +179,22 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
   const grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double dt = s->dt;
+  const double dt = s->dt, lp = s->lp;
+  const double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
+  stencil_geo geo;
+  box bx;
   stencil st;
   sums u = {0};
   size_t i;
+  stencil_geo_init(&geo, g);
+  box_init(&bx, g);
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     int32_t f = bd[ps->body[i]].field;
     int k;
-    stencil_eval(g, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k], ux, uy, qx, qy;
@@ -153,8 +203,8 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
         ux = g->sp[0][sl]; uy = g->sp[1][sl];
         qx = g->sq[0][sl]; qy = g->sq[1][sl];
       } else {
-        ux = g->p[0][n]; uy = g->p[1][n];
-        qx = g->q[0][n]; qy = g->q[1][n];
+        ux = gpx[n]; uy = gpy[n];
+        qx = gqx[n]; qy = gqy[n];
       }
       vx += w * qx; vy += w * qy;
       l00 += ux * dx; l01 += ux * dy;
@@ -164,7 +214,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
     ps->L[2][i] = l10; ps->L[3][i] = l11;
     ps->x[0][i] = x[0] + dt * vx;
     ps->x[1][i] = x[1] + dt * vy;
-    settle(s, i, &u);
+    settle(&bx, ps, i, &u);
   }
   finish(s, &u);
 }

@@ -72,14 +72,20 @@ void grid_free(grid *g) {
   memset(g, 0, sizeof *g);
 }
 
-void grid_reset(grid *g, int musl) {
+size_t grid_mem(const grid *g) {
+  size_t dense = g->nnodes * ((1 + 3 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
+  size_t slot = g->slotcap * (3 * sizeof(int32_t) + (2 + 5 * DIM) * sizeof(double));
+  return dense + slot + g->sharedcap * sizeof(int32_t);
+}
+
+void grid_reset(grid *g, int clear_q) {
   size_t n = g->nnodes * sizeof(double), k;
   int d;
   memset(g->m, 0, n);
   for (d = 0; d < DIM; d++) {
     memset(g->p[d], 0, n);
     memset(g->f[d], 0, n);
-    if (musl) memset(g->q[d], 0, n);
+    if (clear_q) memset(g->q[d], 0, n);
   }
   memset(g->owner, 0xff, g->nnodes * sizeof(int32_t));
   /* only shared nodes carry slot heads; clear just those */

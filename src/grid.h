@@ -58,8 +58,11 @@ void grid_free(grid *g);
 /* bytes the grid needs before any slot, for refusing oversize scenes */
 double grid_bytes(const double lo[DIM], const double hi[DIM], double h,
                   int pad);
-/* clear the dense arrays and the slot table for a new step */
-void grid_reset(grid *g, int musl);
+/* bytes the grid holds now: dense arrays, slot pool, shared list */
+size_t grid_mem(const grid *g);
+/* clear the dense arrays and the slot table for a new step; q only if
+** clear_q (the step need not: solve_momentum writes every q) */
+void grid_reset(grid *g, int clear_q);
 /* the slot of field f at node, creating it; -1 if out of memory */
 int32_t grid_slot_add(grid *g, int32_t node, int32_t field);
 /* the slot of field f at a shared node (must exist) */

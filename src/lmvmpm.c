@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 #include "lauxlib.h"
 #include "lcheck.h"
@@ -236,9 +237,19 @@ static int load(lua_State *L) {
   return 1;
 }
 
+/* mvmpm.clock() -> seconds on a monotonic wall clock, for timing runs
+** (os.clock is the process's CPU time, not elapsed time) */
+static int lclock(lua_State *L) {
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  lua_pushnumber(L, (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec);
+  return 1;
+}
+
 int luaopen_mvmpm(lua_State *L) {
   static const luaL_Reg fns[] = {{"sim", lsim_new}, {"params", params},
-                                 {"load", load}, {NULL, NULL}};
+                                 {"load", load}, {"clock", lclock},
+                                 {NULL, NULL}};
   int mod;
   luaL_newlib(L, fns);
   mod = lua_gettop(L);

@@ -477,6 +477,12 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "friction") == 0) lua_pushnumber(L, s->mu_default);
   else if (strcmp(k, "removed") == 0) lua_pushinteger(L, (lua_Integer)s->nremoved);
   else if (strcmp(k, "shared_nodes") == 0) lua_pushinteger(L, (lua_Integer)s->g.nshared);
+  else if (strcmp(k, "memory") == 0) { /* bytes allocated, by owner */
+    lua_createtable(L, 0, 3);
+    setnum(L, "particles", (double)particles_mem(&s->ps));
+    setnum(L, "capacity", (double)s->ps.cap);
+    setnum(L, "grid", (double)grid_mem(&s->g));
+  }
   else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
   else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL ? "musl" : "usl");
   else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);

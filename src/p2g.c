@@ -10,12 +10,15 @@
 #include "stencil.h"
 
 /* Shared nodes: a node is shared when particles of two fields reach it.
-** The first field seen owns the node; the second creates slots. */
+** The first field seen owns the node; the second creates slots.  The
+** first node fixes the whole stencil, and particles sorted by cell come
+** in runs with the same first node and field: marking again is a no-op,
+** so a run is marked once. */
 int p2g_mark(sim *s) {
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
-  int32_t node[STENCIL_MAX];
+  int32_t node[STENCIL_MAX], last = -1, lastf = -1;
   size_t i;
   for (i = 0; i < ps->n; i++) {
     int32_t f = bd[ps->body[i]].field;
@@ -23,6 +26,9 @@ int p2g_mark(sim *s) {
     int k, nn, d;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     nn = stencil_nodes(g, s->shape, x, node);
+    if (node[0] == last && f == lastf) continue;
+    last = node[0];
+    lastf = f;
     for (k = 0; k < nn; k++) {
       int32_t o = g->owner[node[k]];
       if (o == f) continue;
@@ -38,8 +44,14 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double gx = s->gravity[0], gy = s->gravity[1], lp = s->lp;
+  /* distinct arrays: restrict lets the compiler keep loads ahead of
+  ** stores to the other arrays */
+  double *restrict gm = g->m, *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
+  stencil_geo geo;
   stencil st;
   size_t i;
+  stencil_geo_init(&geo, g);
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double mp = ps->m[i], vx = ps->v[0][i], vy = ps->v[1][i];
@@ -49,18 +61,18 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
     double sxy = V * ps->s[S_XY][i];
     int32_t f = bd[ps->body[i]].field;
     int k;
-    stencil_eval(g, kind, x, lp, &st);
+    stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k];
       double wm = w * mp;
       double fx = wm * gx - (sxx * dx + sxy * dy);
       double fy = wm * gy - (sxy * dx + syy * dy);
-      g->m[n] += wm;
-      g->p[0][n] += wm * vx;
-      g->p[1][n] += wm * vy;
-      g->f[0][n] += fx;
-      g->f[1][n] += fy;
+      gm[n] += wm;
+      gpx[n] += wm * vx;
+      gpy[n] += wm * vy;
+      gfx[n] += fx;
+      gfy[n] += fy;
       if (shared && g->head[n] >= 0) {
         int32_t sl = grid_slot(g, n, f);
         g->sm[sl] += wm;
@@ -87,49 +99,5 @@ void p2g(sim *s) {
     break;
   default:
     if (shared) p2g_kind(s, SHAPE_LINEAR, 1); else p2g_kind(s, SHAPE_LINEAR, 0);
-  }
-}
-
-/* MUSL: the particles' updated momenta, mapped back with the same
-** (old-position) weights; p is free again after solve_velocity. */
-STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
-  grid *g = &s->g;
-  const particles *ps = &s->ps;
-  const body *bd = s->bodies;
-  stencil st;
-  size_t i;
-  for (i = 0; i < ps->n; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    double mp = ps->m[i], vx = ps->v[0][i], vy = ps->v[1][i];
-    int32_t f = bd[ps->body[i]].field;
-    int k;
-    stencil_eval(g, kind, x, s->lp, &st);
-    for (k = 0; k < st.n; k++) {
-      int32_t n = st.node[k];
-      double wm = st.w[k] * mp;
-      g->p[0][n] += wm * vx;
-      g->p[1][n] += wm * vy;
-      if (shared && g->head[n] >= 0) {
-        int32_t sl = grid_slot(g, n, f);
-        g->sp[0][sl] += wm * vx;
-        g->sp[1][sl] += wm * vy;
-      }
-    }
-  }
-}
-
-void p2g_momentum(sim *s) {
-  int shared = s->g.nshared > 0;
-  switch (s->shape) {
-  case SHAPE_GIMP:
-    if (shared) remap_kind(s, SHAPE_GIMP, 1); else remap_kind(s, SHAPE_GIMP, 0);
-    break;
-  case SHAPE_BSPLINE2:
-    if (shared) remap_kind(s, SHAPE_BSPLINE2, 1);
-    else remap_kind(s, SHAPE_BSPLINE2, 0);
-    break;
-  default:
-    if (shared) remap_kind(s, SHAPE_LINEAR, 1);
-    else remap_kind(s, SHAPE_LINEAR, 0);
   }
 }

@@ -100,6 +100,21 @@ int particles_reserve(particles *ps, size_t cap) {
   return 0;
 }
 
+/* A shrink that fails leaves the array's larger block in place, which
+** is as good: every array only has to hold at least cap entries. */
+void particles_fit(particles *ps) {
+  size_t cap = ps->n ? ps->n : 1;
+  int f, c;
+  void *p;
+  if (cap >= ps->cap) return;
+  for (f = 0; f < ps->nfields; f++)
+    for (c = 0; c < ps->fields[f].ncomp; c++)
+      if ((p = realloc(*ps->fields[f].slot[c], cap * 8))) *ps->fields[f].slot[c] = p;
+  if ((p = realloc(ps->scratch, cap * 8))) ps->scratch = p;
+  if ((p = realloc(ps->perm, cap * sizeof(size_t)))) ps->perm = p;
+  ps->cap = cap;
+}
+
 int particles_add_field(particles *ps, const char *name, int ncomp,
                         int type, const char *unit, unsigned flags) {
   int f = particles_find(ps, name);
@@ -175,16 +190,27 @@ int particles_sort(particles *ps, const int32_t *key, size_t ncell) {
 size_t particles_compact(particles *ps, const unsigned char *keep) {
   size_t i, j;
   int f, c;
-  for (f = 0; f < ps->nfields; f++)
+  for (f = 0; f < ps->nfields; f++) {
+    /* arrays hold cap * 8 bytes, but int32 ones are indexed by 4 */
+    size_t sz = ps->fields[f].type == PF_INT32 ? 4 : 8;
     for (c = 0; c < ps->fields[f].ncomp; c++) {
       char *a = *ps->fields[f].slot[c];
       for (i = j = 0; i < ps->n; i++)
         if (keep[i]) {
-          if (i != j) memcpy(a + j * 8, a + i * 8, 8);
+          if (i != j) memcpy(a + j * sz, a + i * sz, sz);
           j++;
         }
     }
+  }
   for (i = j = 0; i < ps->n; i++) j += keep[i] != 0;
   ps->n = j;
   return j;
+}
+
+size_t particles_mem(const particles *ps) {
+  size_t arrays = 1; /* the scratch buffer */
+  int f;
+  for (f = 0; f < ps->nfields; f++) arrays += (size_t)ps->fields[f].ncomp;
+  return ps->cap * (arrays * 8 + sizeof *ps->perm) +
+         ps->ncount * sizeof *ps->count;
 }

@@ -61,6 +61,8 @@ void particles_init(particles *ps);
 void particles_free(particles *ps);
 /* make room for at least cap particles; 0 on success, -1 out of memory */
 int particles_reserve(particles *ps, size_t cap);
+/* give back the capacity beyond n (seeding grows it by doubling) */
+void particles_fit(particles *ps);
 /* register a run-time field (zero filled); returns its index or -1 */
 int particles_add_field(particles *ps, const char *name, int ncomp,
                         int type, const char *unit, unsigned flags);
@@ -74,6 +76,8 @@ static inline void *particles_comp(const particles *ps, int f, int c) {
 size_t particles_push(particles *ps);
 /* stable counting sort by cell index (key[i] in [0, ncell)) */
 int particles_sort(particles *ps, const int32_t *key, size_t ncell);
+/* bytes the store holds: every array at capacity, and the sort buffers */
+size_t particles_mem(const particles *ps);
 /* drop particles with keep[i] == 0, keeping order */
 size_t particles_compact(particles *ps, const unsigned char *keep);
 

@@ -283,7 +283,6 @@ void sim_begin(sim *s) {
   for (i = 0; i < ps->n; i++)
     if (ps->m[i] < mmin) mmin = ps->m[i];
   s->mcut = ps->n ? s->mcut_rel * mmin : 0;
-  if (s->ftemp >= 0) thermal_prestress(s);
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain;
   s->e.jmin = s->e.jmax = 1;
@@ -293,11 +292,14 @@ void sim_begin(sim *s) {
 int sim_step(sim *s) {
   int musl = s->update == UPDATE_MUSL;
   if (!s->started) {
+    /* once, at the first step: bodies are all added */
+    if (s->ftemp >= 0) thermal_prestress(s);
+    particles_fit(&s->ps); /* drop the seeding slack */
     sim_begin(s);
     s->started = 1;
   }
   s->dt = sim_next_dt(s);
-  grid_reset(&s->g, musl);
+  grid_reset(&s->g, 0);
   if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
@@ -320,8 +322,7 @@ int sim_step(sim *s) {
     ** what the particles do; a second wall or contact projection here
     ** would strain particles by motion their momentum never lost, which
     ** measurably creates energy at impacts */
-    p2g_momentum(s);
-    solve_remap(s);
+    solve_remap(s); /* g2p mapped the updated momenta back */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
   }

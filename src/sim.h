@@ -150,7 +150,6 @@ void sim_measure(sim *s);
 /* phases (one file each) */
 int p2g_mark(sim *s);          /* p2g.c: which nodes are shared */
 void p2g(sim *s);              /* p2g.c: mass, momentum, force */
-void p2g_momentum(sim *s);     /* p2g.c: MUSL remap of momentum */
 void solve_momentum(sim *s);   /* solve.c: q = p + dt f */
 void solve_velocity(sim *s);   /* solve.c: q -> vL, f -> dv */
 void solve_remap(sim *s);      /* solve.c: p -> remapped velocity */
@@ -162,7 +161,8 @@ void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
 void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
                                   remapped velocity (MUSL) */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
-void g2p(sim *s);              /* g2p.c: velocities, positions, grad v */
+void g2p(sim *s);              /* g2p.c: velocities; USL: positions, grad v;
+                                  MUSL: momenta back to the grid */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */
 int constitutive(sim *s);      /* sim.c: each material's update */
 void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */

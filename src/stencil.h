@@ -22,32 +22,65 @@ typedef struct stencil {
   double dw[DIM][STENCIL_MAX]; /* physical gradient */
 } stencil;
 
+/*
+** The grid's geometry as the stencil needs it.  A phase copies it into a
+** local before its loop: the grid's own lo and inv_h are doubles like the
+** arrays the loop stores into, so read through the grid they would be
+** reloaded after every store.
+*/
+typedef struct stencil_geo {
+  double lo[DIM], inv_h;
+  double off[DIM];     /* xi = (x - lo) inv_h + off: the ghost nodes */
+  int32_t n[DIM];
+  int periodic[DIM];
+} stencil_geo;
+
 #define STENCIL_INLINE static inline __attribute__((always_inline))
 
+STENCIL_INLINE void stencil_geo_init(stencil_geo *geo, const grid *g) {
+  int d;
+  geo->inv_h = g->inv_h;
+  for (d = 0; d < DIM; d++) {
+    geo->lo[d] = g->lo[d];
+    geo->off[d] = g->periodic[d] ? 0 : g->pad;
+    geo->n[d] = g->n[d];
+    geo->periodic[d] = g->periodic[d];
+  }
+}
+
+/* as grid_wrap */
+STENCIL_INLINE int stencil_wrap(const stencil_geo *geo, int d, int i) {
+  if (geo->periodic[d]) {
+    if (i < 0) i += geo->n[d];
+    else if (i >= geo->n[d]) i -= geo->n[d];
+  }
+  return i;
+}
+
 /* 1-D part: node indices (wrapped) and weights along d */
-STENCIL_INLINE int stencil_1d(const grid *g, int kind, int d, double x,
-                              double lp, int32_t *idx, double *w,
+STENCIL_INLINE int stencil_1d(const stencil_geo *geo, int kind, int d,
+                              double x, double lp, int32_t *idx, double *w,
                               double *dw) {
   int nw = shape_width(kind), k;
-  double xi = (x - g->lo[d]) * g->inv_h + (g->periodic[d] ? 0 : g->pad);
+  double xi = (x - geo->lo[d]) * geo->inv_h + geo->off[d];
   int i0 = shape_eval(kind, xi, lp, w, dw);
   for (k = 0; k < nw; k++) {
-    idx[k] = grid_wrap(g, d, i0 + k);
-    dw[k] *= g->inv_h;
+    idx[k] = stencil_wrap(geo, d, i0 + k);
+    dw[k] *= geo->inv_h;
   }
   return nw;
 }
 
-STENCIL_INLINE void stencil_eval(const grid *g, int kind, const double *x,
-                                 double lp, stencil *st) {
+STENCIL_INLINE void stencil_eval(const stencil_geo *geo, int kind,
+                                 const double *x, double lp, stencil *st) {
   int32_t ix[SHAPE_MAXW], iy[SHAPE_MAXW];
   double wx[SHAPE_MAXW], wy[SHAPE_MAXW], dx[SHAPE_MAXW], dy[SHAPE_MAXW];
-  int nw = stencil_1d(g, kind, 0, x[0], lp, ix, wx, dx), a, b, k = 0;
-  stencil_1d(g, kind, 1, x[1], lp, iy, wy, dy);
+  int nw = stencil_1d(geo, kind, 0, x[0], lp, ix, wx, dx), a, b, k = 0;
+  stencil_1d(geo, kind, 1, x[1], lp, iy, wy, dy);
 #if DIM == 2
   for (b = 0; b < nw; b++)
     for (a = 0; a < nw; a++, k++) {
-      st->node[k] = ix[a] + g->n[0] * iy[b];
+      st->node[k] = ix[a] + geo->n[0] * iy[b];
       st->w[k] = wx[a] * wy[b];
       st->dw[0][k] = dx[a] * wy[b];
       st->dw[1][k] = wx[a] * dy[b];

@@ -1,0 +1,46 @@
+-- bench/grains.lua - (c) the cost of many velocity fields: 10 grains
+-- against 1,000 grains filling the same box with the same number of
+-- particles.  Grains are elastic discs on a square lattice, each
+-- touching its neighbours, each its own body and velocity field, with
+-- frictionless contact; a uniform compression v = -0.05 (x - xc)
+-- presses every contact.  10 grains: 5 x 2 discs of radius 40 cells;
+-- 1,000 grains: 50 x 20 discs of radius 4 cells; box 400 x 160 cells,
+-- 2 x 2 particles per cell, about 201,000 particles either way.
+local mvmpm = require "mvmpm"
+local B = dofile("bench/lib.lua")
+
+local H = 1 / 400
+local W, HT = 400 * H, 160 * H
+
+local function packing(nx, ny)
+  local r = W / (2 * nx)
+  local sim = mvmpm.sim {
+    domain = {x = {0, W}, y = {0, HT}}, cell = H, ppc = 2,
+    sides = "free", t_end = 1e9, contact = {friction = 0},
+  }
+  local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
+  local xc, yc = W / 2, HT / 2
+  local v = function(x, y) return -0.05 * (x - xc), -0.05 * (y - yc) end
+  for j = 0, ny - 1 do
+    for i = 0, nx - 1 do
+      sim:body {shape = mvmpm.disk {center = {(2 * i + 1) * r, (2 * j + 1) * r}, radius = r},
+                material = m, velocity = v}
+    end
+  end
+  return sim
+end
+
+local per = {}
+for _, c in ipairs {{5, 2}, {50, 20}} do
+  local sim = packing(c[1], c[2])
+  local rate, sec, n = B.rate(sim)
+  local ng = c[1] * c[2]
+  per[ng] = 1 / rate
+  B.line("rate", string.format("(c) %d grains, packed, in contact", ng), rate / 1e6,
+    "M p-st/s", string.format("%d particles, %d shared nodes, %.1f ms/step, median of %d x %d steps",
+      sim.n, sim.shared_nodes, 1e3 * sec, B.reps, n))
+  sim = nil
+  collectgarbage()
+end
+B.line("ratio", "(c) t(1000 grains) / t(10 grains)", per[1000] / per[10], "",
+  "per particle-step")

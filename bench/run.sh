@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# bench/run.sh BIN [--quick] - speed figures of mvmpm on one core (make bench).
+#
+# Each bench/*.lua script is a plain Lua script run with `BIN test FILE`
+# (that command runs any Lua file with the mvmpm module loaded and writes
+# no output files); the scripts print one line per figure:
+#   rate       particle-steps per second (particles x steps / wall seconds),
+#              in M p-st/s: millions of particle-steps per second
+#   ratio      a ratio of two timings
+#   memory     bytes per particle
+#   reference  the same problem in other MPM codes, for scale
+#   machine    memory bandwidth of this machine (bench/stream.c)
+# Timings use a monotonic wall clock (mvmpm.clock()) around sim:step(n)
+# after warm-up steps; every rate is the median of several repeats.
+# Nothing here passes or fails: speed is never a test.  --quick (or
+# BENCH_QUICK=1) takes fewer, shorter repeats.  Takes about a minute.
+set -u
+bin=${1:-./mvmpm}
+[ "${2:-}" = "--quick" ] && export BENCH_QUICK=1
+cd "$(dirname "$0")/.." || exit 1
+echo "mvmpm bench: $("$bin" --version), $(git rev-parse --short HEAD 2>/dev/null || echo '?')," \
+     "$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), one core"
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+if ${CC:-cc} -O2 -o "$tmp/stream" bench/stream.c 2>/dev/null; then "$tmp/stream"; fi
+for f in bench/block.lua bench/disks.lua bench/grains.lua; do
+  # keep the figures; drop the test runner's headings and counts
+  "$bin" test "$f" | grep -Ev '^(== |-- .*passed|[0-9]+ passed)'
+done

@@ -1,9 +1,11 @@
 # mvmpm - multi-velocity-field material point method
 #   make deps      install the Debian packages it needs (apt-get)
 #   make           build ./mvmpm
-#   make test      C unit tests + Lua verification + hard cases; ends "N passed, M failed"
+#   make test      C unit tests, the REPL in tmux, Lua verification; ends "N passed, M failed"
 #   make test SAN=1  the same under AddressSanitizer/UndefinedBehaviorSanitizer
 #   make bench     speed figures (rates and ratios), never part of the tests
+#   make figures   the documentation's figures (docs/figures/*.png)
+#   make check-paraview  ParaView's pvbatch opens a run's XDMF (needs Debian's paraview)
 
 DEB_PACKAGES = build-essential pkg-config liblua5.4-dev libhdf5-dev hdf5-tools \
                libedit-dev zlib1g-dev python3-h5py python3-numpy tmux
@@ -59,7 +61,11 @@ bench: $(BIN)
 clean:
 	rm -rf build build-san mvmpm
 
-.PHONY: all deps unit test bench clean check-paraview
+# the documentation's figures, made again from the scenes
+figures: $(BIN)
+	./$(BIN) test docs/figures/fig5.lua
+
+.PHONY: all deps unit test bench clean check-paraview figures
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

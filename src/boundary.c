@@ -18,7 +18,7 @@
 #include "sim.h"
 
 /* one node (or slot) of mass m against side k; returns the impulse */
-static void wall_node(sim *s, const side *sd, int d, double sign, double m,
+static void wall_node(sim *s, side *sd, int d, double sign, double m,
                       double *const mom[DIM], size_t i, double *imp) {
   double dp[DIM], dn, tt = 0, w = 0;
   int e;
@@ -45,6 +45,7 @@ static void wall_node(sim *s, const side *sd, int d, double sign, double m,
     mom[e][i] += imp[e];
     w += imp[e] * sd->v[e];
   }
+  for (e = 0; e < DIM; e++) sd->force[e] += imp[e] / s->dt;
   s->e.boundary += w;
 }
 

@@ -220,7 +220,8 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
     for (d = 0; d < DIM; d++) csum[d] += c[k][d];
   }
   if (drv >= 0) { /* the driven body keeps its velocity and does work */
-    double cd[DIM], w = 0;
+    double cd[DIM], w = 0, *F = s->bodies[s->fdriven[g->sfield[drv]]].force;
+    for (d = 0; d < DIM; d++) F[d] += csum[d] / s->dt;
     for (d = 0; d < DIM; d++) {
       cd[d] = g->sm[drv] * vref[d] - smom[d][drv];
       smom[d][drv] += cd[d];

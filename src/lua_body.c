@@ -422,6 +422,19 @@ static int bvelocity(lua_State *L) { return bvec(L, 1); }
 static int bomega(lua_State *L) { return bvec(L, 2); }
 static int bmass(lua_State *L) { return bvec(L, 3); }
 
+/* b:force() -> fx, fy: the force a driven body put on the other bodies
+** in the last step (the reaction it feels is minus this) */
+static int bforce(lua_State *L) {
+  lbody *lb = checkbody(L, 1);
+  body *b = &lb->ls->s.bodies[lb->idx];
+  int d;
+  if (!b->driven)
+    luaL_error(L, "body '%s' is not driven: only a driven body reports the "
+                  "force it applies", b->name);
+  for (d = 0; d < DIM; d++) lua_pushnumber(L, b->force[d]);
+  return DIM;
+}
+
 /* b:drive(vx, vy): set a driven body's velocity from now on */
 static int bdrive(lua_State *L) {
   lbody *lb = checkbody(L, 1);
@@ -457,6 +470,7 @@ void lbody_open(lua_State *L) {
   static const luaL_Reg meth[] = {{"diag", bdiag_}, {"centroid", bcentroid},
                                   {"velocity", bvelocity}, {"omega", bomega},
                                   {"mass", bmass}, {"drive", bdrive},
+                                  {"force", bforce},
                                   {NULL, NULL}};
   luaL_newmetatable(L, LBODY_MT);
   lua_pushcfunction(L, bindex);

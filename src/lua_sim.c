@@ -450,6 +450,16 @@ static int lparticles(lua_State *L) {
   return 1;
 }
 
+/* sim:wall_force("left") -> fx, fy: the force that side put on the
+** material in the last step */
+static int lwall_force(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  int k = luaL_checkoption(L, 2, NULL, side_names), d;
+  if (k >= NSIDES) luaL_argerror(L, 2, "no such side in this dimension");
+  for (d = 0; d < DIM; d++) lua_pushnumber(L, ls->s.sides[k].force[d]);
+  return DIM;
+}
+
 static int lstable_dt(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   if (!ls->s.started) sim_begin(&ls->s);
@@ -528,6 +538,7 @@ void lsim_open(lua_State *L) {
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
       {"particles", lparticles}, {"stable_dt", lstable_dt},
       {"temperature", lsim_temperature}, {"render", lrender_sim},
+      {"wall_force", lwall_force},
       {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);

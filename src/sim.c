@@ -289,6 +289,17 @@ void sim_begin(sim *s) {
   s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
 }
 
+/* the forces walls and driven bodies report are those of this step */
+static void forces_clear(sim *s) {
+  int k, d;
+  for (k = 0; k < NSIDES; k++)
+    for (d = 0; d < DIM; d++) s->sides[k].force[d] = 0;
+  if (s->ndriven)
+    for (k = 0; k < s->nbody; k++)
+      if (s->bodies[k].driven)
+        for (d = 0; d < DIM; d++) s->bodies[k].force[d] = 0;
+}
+
 int sim_step(sim *s) {
   int musl = s->update == UPDATE_MUSL;
   if (!s->started) {
@@ -308,6 +319,7 @@ int sim_step(sim *s) {
   solve_momentum(s);
   if (s->g.nshared) contact_normals(s);
   if (s->gap_check) reach(s);
+  forces_clear(s);
   if (s->g.nshared && s->fbond >= 0) bond_gather(s);
   if (s->g.nshared) contact_apply(s);
   if (s->ncut) {

@@ -27,6 +27,7 @@ typedef struct side {
   double v[DIM];     /* wall velocity (tangential part moves the wall) */
   double *ext;       /* reach of material toward the wall per wall node */
   size_t next;
+  double force[DIM]; /* force the wall put on the material, last step */
 } side;
 
 typedef struct body {
@@ -35,6 +36,7 @@ typedef struct body {
   int32_t field;     /* velocity field */
   int driven;
   double vdrive[DIM];
+  double force[DIM]; /* driven: force it put on the other bodies, last step */
 } body;
 
 /* a contact law between two fields: friction, and the most their

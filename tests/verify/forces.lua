@@ -1,0 +1,53 @@
+-- The forces walls and driven bodies put on the material (sim:wall_force,
+-- b:force): a block resting on the floor under gravity is carried by the
+-- floor's force, its weight; and the material's momentum changes by
+-- exactly the impulses of the walls and of a driven plate, step by step
+-- (internal forces cancel on the grid, and FLIP hands the grid's change
+-- of momentum to the particles whole).
+local mvmpm = require "mvmpm"
+local V = require "mvmpm.verify"
+
+V.case "a block at rest on the floor: the floor carries its weight"
+do
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
+                         gravity = {0, -1}, t_end = 50}
+  local m = mvmpm.elastic {K = 10, G = 5, density = 1}
+  sim:body {shape = mvmpm.rect {lo = {0.25, 0}, hi = {0.75, 0.5}}, material = m}
+  local f, n = 0, 0
+  sim:every {steps = 1, fn = function(s)
+    if s.t > 25 then
+      local _, fy = s:wall_force("bottom")
+      f, n = f + fy, n + 1
+    end
+  end}
+  sim:run()
+  V.near("mean floor force over t = 25..50 / weight", f / n / 0.25, 1, 0.01)
+  local lx = sim:wall_force("left")
+  V.near("left wall force (nothing touches it)", lx, 0, 1e-12)
+end
+
+V.case "momentum balance: the plate's and the walls' impulses"
+do
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
+                         t_end = 20, contact = {friction = 0.2}}
+  local m = mvmpm.elastic {K = 10, G = 5, density = 1}
+  local plate = sim:body {name = "plate", shape = mvmpm.rect {lo = {0.1, 0.25}, hi = {0.2, 0.75}},
+                          material = m, driven = function(t) return 0.02, 0.01 * math.sin(t) end}
+  local blk = sim:body {shape = mvmpm.rect {lo = {0.2, 0.25}, hi = {0.9, 0.75}}, material = m,
+                        velocity = {-0.05, 0.02}}
+  local px0, py0 = blk:diag().vx * blk:mass(), blk:diag().vy * blk:mass()
+  local ix, iy, worst = 0, 0, 0
+  sim:every {steps = 1, fn = function(s)
+    local fx, fy = plate:force()
+    ix, iy = ix + fx * s.dt, iy + fy * s.dt
+    for _, side in ipairs {"left", "right", "bottom", "top"} do
+      local wx, wy = s:wall_force(side)
+      ix, iy = ix + wx * s.dt, iy + wy * s.dt
+    end
+    local d = blk:diag()
+    worst = math.max(worst, math.abs(d.vx * d.mass - px0 - ix), math.abs(d.vy * d.mass - py0 - iy))
+  end}
+  sim:run()
+  V.above("impulse the plate and walls gave (|x|)", math.abs(ix), 0.01)
+  V.below("max |momentum change - impulses| / (m v0)", worst / (blk:mass() * 0.05), 1e-9)
+end

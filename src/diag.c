@@ -4,23 +4,41 @@
 ** with r relative to the centroid and a the particle's side, so a
 ** seeded disc's I_c matches the continuum m R^2 / 2 closely.
 */
+#include <stdlib.h>
 #include <string.h>
 #include "diag.h"
+
+/* x - ref along d, the nearest image where d is periodic */
+static double rel(const sim *s, int d, double x, double ref) {
+  double r = x - ref;
+  if (s->g.periodic[d]) {
+    double L = s->g.hi[d] - s->g.lo[d];
+    if (r > L / 2) r -= L;
+    else if (r < -L / 2) r += L;
+  }
+  return r;
+}
 
 int diag_bodies(const sim *s, bdiag *out) {
   const particles *ps = &s->ps;
   const double a = 2.0 * s->lp * s->g.h;
+  double *ref = malloc((size_t)s->nbody * DIM * sizeof *ref);
   size_t i;
   int b, d;
+  if (!ref) return -1;
   memset(out, 0, (size_t)s->nbody * sizeof *out);
+  /* positions are taken relative to each body's first particle, so that
+  ** a body across a periodic seam has its centroid where it is, not
+  ** halfway between its two halves */
   for (i = 0; i < ps->n; i++) {
     bdiag *o = &out[ps->body[i]];
     double m = ps->m[i], v2 = 0;
     int32_t mi = s->bmat[ps->body[i]];
-    o->n++;
+    if (o->n++ == 0)
+      for (d = 0; d < DIM; d++) ref[DIM * ps->body[i] + d] = ps->x[d][i];
     o->mass += m;
     for (d = 0; d < DIM; d++) {
-      o->x[d] += m * ps->x[d][i];
+      o->x[d] += m * rel(s, d, ps->x[d][i], ref[DIM * ps->body[i] + d]);
       o->v[d] += m * ps->v[d][i];
       v2 += ps->v[d][i] * ps->v[d][i];
     }
@@ -30,23 +48,21 @@ int diag_bodies(const sim *s, bdiag *out) {
   for (b = 0; b < s->nbody; b++)
     if (out[b].mass > 0)
       for (d = 0; d < DIM; d++) {
-        out[b].x[d] /= out[b].mass;
+        double x = ref[DIM * b + d] + out[b].x[d] / out[b].mass;
+        if (s->g.periodic[d]) { /* back into the domain */
+          double L = s->g.hi[d] - s->g.lo[d];
+          if (x >= s->g.hi[d]) x -= L;
+          else if (x < s->g.lo[d]) x += L;
+        }
+        out[b].x[d] = x;
         out[b].v[d] /= out[b].mass;
       }
+  free(ref);
   for (i = 0; i < ps->n; i++) {
     bdiag *o = &out[ps->body[i]];
     double m = ps->m[i];
-    double rx = ps->x[0][i] - o->x[0], ry = ps->x[1][i] - o->x[1];
+    double rx = rel(s, 0, ps->x[0][i], o->x[0]), ry = rel(s, 1, ps->x[1][i], o->x[1]);
     double ux = ps->v[0][i] - o->v[0], uy = ps->v[1][i] - o->v[1];
-    /* a body across a periodic seam: take the nearest image */
-    if (s->g.periodic[0]) {
-      double L = s->g.hi[0] - s->g.lo[0];
-      if (rx > L / 2) rx -= L; else if (rx < -L / 2) rx += L;
-    }
-    if (s->g.periodic[1]) {
-      double L = s->g.hi[1] - s->g.lo[1];
-      if (ry > L / 2) ry -= L; else if (ry < -L / 2) ry += L;
-    }
     o->angmom += m * (rx * uy - ry * ux);
     o->inertia += m * (rx * rx + ry * ry + a * a / 6.0);
   }

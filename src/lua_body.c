@@ -122,21 +122,34 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
   int ppc = ls->s.ppc, N[DIM], i0[DIM], i1[DIM], d;
   double hp = g->h / ppc, vol = pow(hp, DIM), x[DIM];
   size_t cap = 0;
+  /* along a periodic dimension the shape's lattice range is not clipped
+  ** but wrapped: a shape across the seam seeds its image on the far side
+  ** (at most one period of it) */
   for (d = 0; d < DIM; d++) {
     double a = (sh->lo[d] - g->lo[d]) / hp - 1, b = (sh->hi[d] - g->lo[d]) / hp + 1;
     N[d] = g->cells[d] * ppc;
-    i0[d] = a < 0 ? 0 : a > N[d] ? N[d] : (int)a;
-    i1[d] = b > N[d] ? N[d] : b < 0 ? 0 : (int)b;
+    if (g->periodic[d]) {
+      i0[d] = (int)floor(a);
+      i1[d] = (int)ceil(b);
+      if (i1[d] - i0[d] > N[d]) i1[d] = i0[d] + N[d];
+    } else {
+      i0[d] = a < 0 ? 0 : a > N[d] ? N[d] : (int)a;
+      i1[d] = b > N[d] ? N[d] : b < 0 ? 0 : (int)b;
+    }
   }
 #if DIM == 2
   {
     int i, j;
     for (j = i0[1]; j < i1[1]; j++)
       for (i = i0[0]; i < i1[0]; i++) {
-        size_t k = (size_t)i + (size_t)N[0] * j;
+        int iw = ((i % N[0]) + N[0]) % N[0], jw = ((j % N[1]) + N[1]) % N[1];
+        size_t k = (size_t)iw + (size_t)N[0] * jw;
+        /* the shape is tested where it is; the particle goes to the image */
         x[0] = g->lo[0] + (i + 0.5) * hp;
         x[1] = g->lo[1] + (j + 0.5) * hp;
         if (!lshape_inside(L, shidx, sh, x)) continue;
+        x[0] = g->lo[0] + (iw + 0.5) * hp;
+        x[1] = g->lo[1] + (jw + 0.5) * hp;
         if (ls->occ[k] >= 0) {
           if (skip_taken) continue;
           chk_error(L, "body '%s' overlaps body '%s' at (%g, %g); move it, or "
@@ -376,7 +389,7 @@ static void diag_of(lua_State *L, lbody *lb, bdiag *out) {
   sim *s = &lb->ls->s;
   bdiag *all = malloc((size_t)s->nbody * sizeof *all);
   if (!all) luaL_error(L, "body: out of memory");
-  diag_bodies(s, all);
+  if (diag_bodies(s, all)) { free(all); luaL_error(L, "body: out of memory"); }
   *out = all[lb->idx];
   free(all);
 }

@@ -15,6 +15,7 @@ local P = mvmpm.params {
   t_end = 3.5,
   cfl = 0.25,
   offset = 0.0,        -- upper disk shifted across the line of approach
+  shape = "linear",
 }
 local o = P.offset / math.sqrt(2)
 
@@ -24,7 +25,7 @@ local sim = mvmpm.sim {
   ppc = 2,
   sides = "free",
   fields = P.fields,
-  cfl = P.cfl,
+  cfl = P.cfl, shape = P.shape,
   t_end = P.t_end,
   contact = {friction = P.friction},
 }

@@ -16,6 +16,7 @@ local P = mvmpm.params {
   cfl = 0.25,
   update = "musl",
   shape = "linear",
+  transfer = "flip",   -- or "apic" (with shape gimp or bspline2)
   separation = true,   -- contact only once surfaces meet
 }
 
@@ -27,6 +28,7 @@ local sim = mvmpm.sim {
   shape = P.shape,
   update = P.update,
   flip = P.flip,
+  transfer = P.transfer,
   cfl = P.cfl,
   t_end = P.t_end,
   sides = {"wall", friction = P.friction},

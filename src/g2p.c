@@ -85,7 +85,7 @@ static void finish(sim *s, const sums *u) {
 ** particles' order either way.
 */
 STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
-                             const int full) {
+                             const int full, const int apic) {
   grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
@@ -94,6 +94,12 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
   const double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
   double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  /* APIC: the affine matrix C; B-splines give it exactly from the
+  ** weights, C = 4 / h^2 sum_i S_ip v_i r_i^T, the hats and GIMP as the
+  ** velocity gradient sum_i v_i grad S_ip^T */
+  const double Dinv = 4.0 * g->inv_h * g->inv_h;
+  double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
+  double r[DIM][STENCIL_MAX];
   stencil_geo geo;
   box bx;
   stencil st;
@@ -101,14 +107,20 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   size_t i;
   stencil_geo_init(&geo, g);
   box_init(&bx, g);
+  if (apic) {
+    c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
+    c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
+  }
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, ax = 0, ay = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
+    double b00 = 0, b01 = 0, b10 = 0, b11 = 0;
     double nvx, nvy;
     const body *b = &bd[ps->body[i]];
     int32_t slot[STENCIL_MAX];
     int k;
-    stencil_eval(&geo, kind, x, lp, &st);
+    if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
+    else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], qx, qy, fx, fy;
@@ -123,15 +135,32 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       }
       vx += w * qx; vy += w * qy;
       ax += w * fx; ay += w * fy;
-      if (full) {
+      if (full || (apic && kind != SHAPE_BSPLINE2)) {
         double dx = st.dw[0][k], dy = st.dw[1][k];
         l00 += qx * dx; l01 += qx * dy;
         l10 += qy * dx; l11 += qy * dy;
       }
+      if (apic && kind == SHAPE_BSPLINE2) {
+        double wx = w * r[0][k], wy = w * r[1][k];
+        b00 += qx * wx; b01 += qx * wy;
+        b10 += qy * wx; b11 += qy * wy;
+      }
+    }
+    if (apic) {
+      if (kind == SHAPE_BSPLINE2) {
+        b00 *= Dinv; b01 *= Dinv; b10 *= Dinv; b11 *= Dinv;
+      } else {
+        b00 = l00; b01 = l01; b10 = l10; b11 = l11;
+      }
+      if (b->driven) b00 = b01 = b10 = b11 = 0;
+      c00[i] = b00; c01[i] = b01; c10[i] = b10; c11[i] = b11;
     }
     if (b->driven) {
       nvx = b->vdrive[0];
       nvy = b->vdrive[1];
+    } else if (apic) {
+      nvx = vx;
+      nvy = vy;
     } else {
       nvx = flip * (ps->v[0][i] + ax) + pic * vx;
       nvy = flip * (ps->v[1][i] + ay) + pic * vy;
@@ -148,12 +177,16 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       const double mp = ps->m[i];
       for (k = 0; k < st.n; k++) {
         int32_t n = st.node[k];
-        double wm = st.w[k] * mp;
-        gpx[n] += wm * nvx;
-        gpy[n] += wm * nvy;
+        double wm = st.w[k] * mp, ux = nvx, uy = nvy;
+        if (apic) {
+          ux += b00 * r[0][k] + b01 * r[1][k];
+          uy += b10 * r[0][k] + b11 * r[1][k];
+        }
+        gpx[n] += wm * ux;
+        gpy[n] += wm * uy;
         if (shared && slot[k] >= 0) {
-          g->sp[0][slot[k]] += wm * nvx;
-          g->sp[1][slot[k]] += wm * nvy;
+          g->sp[0][slot[k]] += wm * ux;
+          g->sp[1][slot[k]] += wm * uy;
         }
       }
     }
@@ -163,15 +196,19 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
 
 void g2p(sim *s) {
   int shared = s->g.nshared > 0, full = s->update == UPDATE_USL;
-#define G2P(K)                                      \
-  if (shared) { if (full) g2p_kind(s, K, 1, 1); else g2p_kind(s, K, 1, 0); } \
-  else { if (full) g2p_kind(s, K, 0, 1); else g2p_kind(s, K, 0, 0); }
+  int apic = s->transfer == TRANSFER_APIC;
+#define G2PA(K, SH, FU)                                                  \
+  if (apic) g2p_kind(s, K, SH, FU, 1); else g2p_kind(s, K, SH, FU, 0);
+#define G2P(K)                                                           \
+  if (shared) { if (full) { G2PA(K, 1, 1) } else { G2PA(K, 1, 0) } }     \
+  else { if (full) { G2PA(K, 0, 1) } else { G2PA(K, 0, 0) } }
   switch (s->shape) {
   case SHAPE_GIMP: G2P(SHAPE_GIMP); break;
   case SHAPE_BSPLINE2: G2P(SHAPE_BSPLINE2); break;
   default: G2P(SHAPE_LINEAR);
   }
 #undef G2P
+#undef G2PA
 }
 
 /* MUSL pass 2: gradient from the remapped velocities (in p), move with vL */

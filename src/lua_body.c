@@ -350,6 +350,11 @@ int lbody_new(lua_State *L) {
   }
   free(sd.x);
   free(sd.vol);
+  if (s->faff >= 0 && omega != 0) { /* APIC: the rigid spin is affine */
+    double *c01 = particles_comp(&s->ps, s->faff, 1);
+    double *c10 = particles_comp(&s->ps, s->faff, 2);
+    for (k = first; k < s->ps.n; k++) { c01[k] = -omega; c10[k] = omega; }
+  }
   if (bond > 0) { /* strength of the body's bonds to its neighbours */
     double *bp;
     if (sim_enable_bonds(s) < 0) luaL_error(L, "body: out of memory for bonds");

@@ -39,7 +39,8 @@ int p2g_mark(sim *s) {
   return 0;
 }
 
-STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
+STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
+                             const int apic) {
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
@@ -48,24 +49,35 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
   ** stores to the other arrays */
   double *restrict gm = g->m, *restrict gpx = g->p[0], *restrict gpy = g->p[1];
   double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
+  const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
+  double r[DIM][STENCIL_MAX];
   stencil_geo geo;
   stencil st;
   size_t i;
   stencil_geo_init(&geo, g);
+  if (apic) {
+    c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
+    c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
+  }
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    double mp = ps->m[i], vx = ps->v[0][i], vy = ps->v[1][i];
+    double mp = ps->m[i], vx0 = ps->v[0][i], vy0 = ps->v[1][i];
     double J = ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
     double V = J * ps->vol0[i];
     double sxx = V * ps->s[S_XX][i], syy = V * ps->s[S_YY][i];
     double sxy = V * ps->s[S_XY][i];
     int32_t f = bd[ps->body[i]].field;
     int k;
-    stencil_eval(&geo, kind, x, lp, &st);
+    if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
+    else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k];
-      double wm = w * mp;
+      double wm = w * mp, vx = vx0, vy = vy0;
+      if (apic) { /* the particle's affine velocity at the node */
+        vx += c00[i] * r[0][k] + c01[i] * r[1][k];
+        vy += c10[i] * r[0][k] + c11[i] * r[1][k];
+      }
       double fx = wm * gx - (sxx * dx + sxy * dy);
       double fy = wm * gy - (sxy * dx + syy * dy);
       gm[n] += wm;
@@ -88,16 +100,14 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared) {
 }
 
 void p2g(sim *s) {
-  int shared = s->g.nshared > 0;
+  int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
+#define P2G(K)                                                         \
+  if (shared) { if (apic) p2g_kind(s, K, 1, 1); else p2g_kind(s, K, 1, 0); } \
+  else { if (apic) p2g_kind(s, K, 0, 1); else p2g_kind(s, K, 0, 0); }
   switch (s->shape) {
-  case SHAPE_GIMP:
-    if (shared) p2g_kind(s, SHAPE_GIMP, 1); else p2g_kind(s, SHAPE_GIMP, 0);
-    break;
-  case SHAPE_BSPLINE2:
-    if (shared) p2g_kind(s, SHAPE_BSPLINE2, 1);
-    else p2g_kind(s, SHAPE_BSPLINE2, 0);
-    break;
-  default:
-    if (shared) p2g_kind(s, SHAPE_LINEAR, 1); else p2g_kind(s, SHAPE_LINEAR, 0);
+  case SHAPE_GIMP: P2G(SHAPE_GIMP); break;
+  case SHAPE_BSPLINE2: P2G(SHAPE_BSPLINE2); break;
+  default: P2G(SHAPE_LINEAR);
   }
+#undef P2G
 }

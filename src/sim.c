@@ -21,6 +21,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->t_end = 1.0;
   s->gap_check = 1;
   s->bond_default = INFINITY;
+  s->faff = -1;
   s->t_stop = INFINITY;
   s->fbond = -1;
   s->mcut_rel = 1e-9;
@@ -154,6 +155,14 @@ const pairlaw *sim_law_of(const sim *s, int32_t a, int32_t b) {
 double sim_law(const sim *s, int32_t a, int32_t b) {
   const pairlaw *l = sim_law_of(s, a, b);
   return l ? l->mu : s->mu_default;
+}
+
+int sim_enable_apic(sim *s) {
+  s->transfer = TRANSFER_APIC;
+  if (s->faff < 0)
+    s->faff = particles_add_field(&s->ps, "affine", NTENS, PF_DOUBLE, "1/T",
+                                  PF_RESTART);
+  return s->faff < 0 ? -1 : 0;
 }
 
 int sim_enable_bonds(sim *s) {

@@ -18,6 +18,9 @@
 
 enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
 enum update_kind { UPDATE_USL, UPDATE_MUSL };
+/* FLIP: the velocity increment blended with PIC by flip; APIC: the
+** grid velocity and an affine velocity field per particle (g2p.c) */
+enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC };
 #define NSIDES (2 * DIM)
 /* side index: 2 d for the low side of dimension d, 2 d + 1 for the high */
 
@@ -67,6 +70,8 @@ typedef struct sim {
   int shape;         /* enum shape_kind */
   int update;        /* enum update_kind */
   double flip;       /* FLIP fraction of the velocity update, 0 = PIC */
+  int transfer;      /* enum transfer_kind */
+  int faff;          /* APIC: particle field "affine" (C, row major) */
   double cfl;        /* Courant number for the automatic step */
   double dt_fixed;   /* > 0: fixed step */
   double dt, t, t_end;
@@ -124,6 +129,9 @@ const pairlaw *sim_law_of(const sim *s, int32_t a, int32_t b);
 double sim_law(const sim *s, int32_t a, int32_t b);
 /* give the particles a bond strength field ("bond"); its index or -1 */
 int sim_enable_bonds(sim *s);
+/* the affine transfer (APIC): registers the particles' "affine" field;
+** 0 or -1 */
+int sim_enable_apic(sim *s);
 /* append a particle of body b at x with volume vol; index or -1 */
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],
                       const double v[DIM], double vol);

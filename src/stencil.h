@@ -91,6 +91,40 @@ STENCIL_INLINE void stencil_eval(const stencil_geo *geo, int kind,
   st->n = k;
 }
 
+/*
+** The stencil with each node's offset from the particle, r = x_i - x_p
+** (unwrapped: across a periodic seam it is the near image), for the
+** affine transfer (APIC).  A separate function so that the other phases
+** store nothing they do not read.
+*/
+STENCIL_INLINE void stencil_eval_r(const stencil_geo *geo, int kind,
+                                   const double *x, double lp, stencil *st,
+                                   double r[DIM][STENCIL_MAX]) {
+  double rx[SHAPE_MAXW], ry[SHAPE_MAXW], h = 1.0 / geo->inv_h;
+  double xi = (x[0] - geo->lo[0]) * geo->inv_h + geo->off[0];
+  double yi = (x[1] - geo->lo[1]) * geo->inv_h + geo->off[1];
+  /* the first node of the stencil, as shape.h chooses it */
+  int i0 = kind == SHAPE_LINEAR ? (int)floor(xi)
+           : kind == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
+                                : (int)floor(xi - 0.5);
+  int j0 = kind == SHAPE_LINEAR ? (int)floor(yi)
+           : kind == SHAPE_GIMP ? (int)floor(yi + 0.5) - 1
+                                : (int)floor(yi - 0.5);
+  int nw = shape_width(kind), a, b, k = 0;
+  stencil_eval(geo, kind, x, lp, st);
+  for (a = 0; a < nw; a++) {
+    rx[a] = (i0 + a - xi) * h;
+    ry[a] = (j0 + a - yi) * h;
+  }
+#if DIM == 2
+  for (b = 0; b < nw; b++)
+    for (a = 0; a < nw; a++, k++) {
+      r[0][k] = rx[a];
+      r[1][k] = ry[b];
+    }
+#endif
+}
+
 /* node indices only (for marking shared nodes) */
 STENCIL_INLINE int stencil_nodes(const grid *g, int kind, const double *x,
                                  int32_t *node) {

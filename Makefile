@@ -61,11 +61,15 @@ bench: $(BIN)
 clean:
 	rm -rf build build-san mvmpm
 
+# the hard-case suite (not yet part of make test: see tests/hard/README)
+hard: $(BIN)
+	./$(BIN) test tests/hard/*.lua
+
 # the documentation's figures, made again from the scenes
 figures: $(BIN)
 	./$(BIN) test docs/figures/fig5.lua
 
-.PHONY: all deps unit test bench clean check-paraview figures
+.PHONY: all deps unit test bench clean check-paraview figures hard
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

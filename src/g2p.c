@@ -15,21 +15,22 @@
 #include "stencil.h"
 
 typedef struct sums {
-  double ke, mom[DIM], am, v2max;
+  double ke, mom[DIM], am, v2max, pe;
   size_t out;
 } sums;
 
 /* the domain as settle needs it, copied into a local like stencil_geo */
 typedef struct box {
-  double lo[DIM], hi[DIM], inv_h;
+  double lo[DIM], hi[DIM], inv_h, grav[DIM];
   int32_t cells[DIM];
   int periodic[DIM];
 } box;
 
-STENCIL_INLINE void box_init(box *bx, const grid *g) {
+STENCIL_INLINE void box_init(box *bx, const grid *g, const double *grav) {
   int d;
   bx->inv_h = g->inv_h;
   for (d = 0; d < DIM; d++) {
+    bx->grav[d] = grav[d];
     bx->lo[d] = g->lo[d];
     bx->hi[d] = g->hi[d];
     bx->cells[d] = g->cells[d];
@@ -58,6 +59,7 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
     stride *= bx->cells[d];
     v2 += ps->v[d][i] * ps->v[d][i];
     u->mom[d] += m * ps->v[d][i];
+    u->pe -= m * bx->grav[d] * x;
   }
   if (cell < 0) u->out++;
   ps->cell[i] = cell;
@@ -71,6 +73,7 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
 static void finish(sim *s, const sums *u) {
   int d;
   s->e.kinetic = u->ke;
+  s->e.potential = u->pe;
   for (d = 0; d < DIM; d++) s->e.mom[d] = u->mom[d];
   s->e.angmom = u->am;
   s->vmax = sqrt(u->v2max);
@@ -106,7 +109,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   sums u = {0};
   size_t i;
   stencil_geo_init(&geo, g);
-  box_init(&bx, g);
+  box_init(&bx, g, s->gravity);
   if (apic) {
     c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
     c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
@@ -225,7 +228,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
   sums u = {0};
   size_t i;
   stencil_geo_init(&geo, g);
-  box_init(&bx, g);
+  box_init(&bx, g, s->gravity);
   for (i = 0; i < ps->n; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;

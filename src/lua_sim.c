@@ -389,6 +389,7 @@ static int lenergy(lua_State *L) {
   lua_createtable(L, 0, 14);
   setnum(L, "kinetic", s->e.kinetic);
   setnum(L, "strain", s->e.strain);
+  setnum(L, "potential", s->e.potential);
   setnum(L, "dissipated", s->e.friction);
   setnum(L, "plastic", s->e.plastic);
   setnum(L, "viscous", s->e.viscous);

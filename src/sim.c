@@ -205,7 +205,7 @@ void sim_measure(sim *s) {
   const particles *ps = &s->ps;
   size_t i;
   int d;
-  double ke = 0, se = 0, am = 0, v2max = 0;
+  double ke = 0, se = 0, am = 0, v2max = 0, pe = 0;
   for (d = 0; d < DIM; d++) s->e.mom[d] = 0;
   for (i = 0; i < ps->n; i++) {
     double v2 = 0;
@@ -213,6 +213,7 @@ void sim_measure(sim *s) {
     for (d = 0; d < DIM; d++) {
       v2 += ps->v[d][i] * ps->v[d][i];
       s->e.mom[d] += ps->m[i] * ps->v[d][i];
+      pe -= ps->m[i] * s->gravity[d] * ps->x[d][i];
     }
     if (v2 > v2max) v2max = v2;
     ke += 0.5 * ps->m[i] * v2;
@@ -221,6 +222,7 @@ void sim_measure(sim *s) {
   }
   s->e.kinetic = ke;
   s->e.strain = se;
+  s->e.potential = pe;
   s->e.angmom = am;
   s->vmax = sqrt(v2max);
 }
@@ -236,7 +238,7 @@ double sim_next_dt(sim *s) {
 }
 
 double sim_total(const sim *s) {
-  return s->e.kinetic + s->e.strain + s->e.lag;
+  return s->e.kinetic + s->e.strain + s->e.potential + s->e.lag;
 }
 
 double sim_residual(const sim *s) {
@@ -293,7 +295,7 @@ void sim_begin(sim *s) {
     if (ps->m[i] < mmin) mmin = ps->m[i];
   s->mcut = ps->n ? s->mcut_rel * mmin : 0;
   sim_measure(s);
-  s->e.initial = s->e.kinetic + s->e.strain;
+  s->e.initial = s->e.kinetic + s->e.strain + s->e.potential;
   s->e.jmin = s->e.jmax = 1;
   s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
 }

@@ -50,6 +50,7 @@ typedef struct pairlaw { int32_t a, b; double mu, bond; } pairlaw;
 /* energy and momentum, updated every step */
 typedef struct sim_energy {
   double kinetic, strain;
+  double potential;  /* of gravity, -sum m g.x: zero without gravity */
   double lag;        /* -dt/2 sum V sigma:D: see sim_total */
   double friction;   /* work dissipated by friction (walls + contacts) */
   double boundary;   /* work done on the material by walls / driven bodies */

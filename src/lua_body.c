@@ -241,6 +241,16 @@ static void drive_spec(lua_State *L, lsim *ls, int simidx, int b) {
   }
 }
 
+/* r along d as the nearest image where d is periodic */
+static double near(const sim *s, int d, double r) {
+  if (s->g.periodic[d]) {
+    double L = s->g.hi[d] - s->g.lo[d];
+    if (r > L / 2) r -= L;
+    else if (r < -L / 2) r += L;
+  }
+  return r;
+}
+
 int lbody_new(lua_State *L) {
   static const char *const keys[] = {"name", "shape", "points", "material",
       "velocity", "angular_velocity", "field", "driven", "volume", "overlap",
@@ -321,14 +331,18 @@ int lbody_new(lua_State *L) {
   if (b < 0) { free(sd.x); free(sd.vol); free(taken); luaL_error(L, "body: out of memory"); }
   for (k = 0; k < ntaken; k++) ls->occ[taken[k]] = b;
   free(taken);
+  /* the centre of the spin, and each point's arm from it, measured as the
+  ** nearest image across periodic sides (a body across a seam spins
+  ** about where it is, not about the middle of the domain) */
   for (k = 0; k < sd.n; k++)
-    for (d = 0; d < DIM; d++) c[d] += sd.x[DIM * k + d] / sd.n;
+    for (d = 0; d < DIM; d++) c[d] += near(s, d, sd.x[DIM * k + d] - sd.x[d]) / sd.n;
+  for (d = 0; d < DIM; d++) c[d] += sd.x[d];
   first = s->ps.n;
   for (k = 0; k < sd.n; k++) {
     double *x = &sd.x[DIM * k], v[DIM];
     for (d = 0; d < DIM; d++) v[d] = v0[d];
-    v[0] -= omega * (x[1] - c[1]);
-    v[1] += omega * (x[0] - c[0]);
+    v[0] -= omega * near(s, 1, x[1] - c[1]);
+    v[1] += omega * near(s, 0, x[0] - c[0]);
     if (vfun) { /* velocity = function(x, y) return vx, vy end */
       lua_getfield(L, 2, "velocity");
       for (d = 0; d < DIM; d++) lua_pushnumber(L, x[d]);

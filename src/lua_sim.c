@@ -94,12 +94,13 @@ static double bondcap(lua_State *L, int idx, const char *what, double def) {
   return b;
 }
 
-static double friction(lua_State *L, int idx, const char *what) {
+/* friction = mu | "stick"; def when absent */
+static double friction(lua_State *L, int idx, const char *what, double def) {
   double mu;
   lua_getfield(L, idx, "friction");
   if (lua_type(L, -1) == LUA_TSTRING && strcmp(lua_tostring(L, -1), "stick") == 0)
     mu = INFINITY;
-  else mu = chk_num(L, idx, what, "friction", 0, 0, HUGE_VAL, 0);
+  else mu = chk_num(L, idx, what, "friction", def, 0, HUGE_VAL, 0);
   lua_pop(L, 1);
   return mu;
 }
@@ -251,7 +252,7 @@ int lsim_new(lua_State *L) {
       int ci = lua_gettop(L);
       if (!lua_istable(L, ci)) luaL_error(L, "sim: field 'contact' must be a table");
       chk_keys(L, ci, "sim.contact", ck);
-      s->mu_default = friction(L, ci, "sim.contact");
+      s->mu_default = friction(L, ci, "sim.contact", 0);
       s->gap_check = chk_bool(L, ci, "sim.contact", "separation", 1);
       s->bond_default = bondcap(L, ci, "sim.contact", INFINITY);
     }
@@ -285,7 +286,7 @@ static int lcontact(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   if (lua_istable(L, 2)) {
     chk_keys(L, 2, "contact", ck);
-    ls->s.mu_default = friction(L, 2, "contact");
+    ls->s.mu_default = friction(L, 2, "contact", ls->s.mu_default);
     ls->s.gap_check = chk_bool(L, 2, "contact", "separation", ls->s.gap_check);
     ls->s.bond_default = bondcap(L, 2, "contact", ls->s.bond_default);
     return 0;
@@ -299,7 +300,7 @@ static int lcontact(lua_State *L) {
       luaL_error(L, "contact: bodies '%s' and '%s' share one velocity field, so "
                     "they are bonded; give them different fields",
                  ls->s.bodies[a->idx].name, ls->s.bodies[b->idx].name);
-    mu = friction(L, 4, "contact");
+    mu = friction(L, 4, "contact", ls->s.mu_default);
     if (sim_set_law(&ls->s, fa, fb, mu,
                     bondcap(L, 4, "contact", ls->s.bond_default)))
       luaL_error(L, "contact: out of memory");
@@ -465,8 +466,12 @@ static int lparticles(lua_State *L) {
 ** material in the last step */
 static int lwall_force(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
-  int k = luaL_checkoption(L, 2, NULL, side_names), d;
-  if (k >= NSIDES) luaL_argerror(L, 2, "no such side in this dimension");
+  const char *name = luaL_checkstring(L, 2);
+  int k, d;
+  for (k = 0; k < NSIDES && strcmp(side_names[k], name) != 0; k++) {}
+  if (k == NSIDES)
+    luaL_error(L, "wall_force: no side '%s' (the sides are left, right, "
+                  "bottom, top%s)", name, DIM == 3 ? ", back, front" : "");
   for (d = 0; d < DIM; d++) lua_pushnumber(L, ls->s.sides[k].force[d]);
   return DIM;
 }
@@ -532,7 +537,7 @@ static int lnewindex(lua_State *L) {
   else if (strcmp(k, "cfl") == 0) s->cfl = chk_num(L, 4, "sim", k, 0.25, 0, 1, CHK_OPENLO);
   else if (strcmp(k, "dt") == 0) s->dt_fixed = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
   else if (strcmp(k, "t_end") == 0) s->t_end = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
-  else if (strcmp(k, "friction") == 0) s->mu_default = friction(L, 4, "sim");
+  else if (strcmp(k, "friction") == 0) s->mu_default = friction(L, 4, "sim", s->mu_default);
   else if (strcmp(k, "progress") == 0) ls->progress = lua_toboolean(L, 3);
   return 0;
 }

@@ -22,7 +22,7 @@ static const char *progname = "mvmpm";
 static void usage(FILE *f) {
   fprintf(f,
 "usage: %s run SCENE.lua [--set name=value ...] [--out DIR] [--quiet]\n"
-"       %s repl [SCENE.lua] [--set name=value ...]\n"
+"       %s repl [SCENE.lua] [--set name=value ...] [--out DIR]\n"
 "       %s test [FILE.lua ...]        (default: tests/verify/*.lua)\n"
 "       %s render SNAPSHOT.h5 [--by KEY] [--out FILE.png] [--width N]\n"
 "                [--range LO,HI] [--colormap auto|seq|div] [--title TEXT]\n"

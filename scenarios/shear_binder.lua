@@ -13,7 +13,7 @@
 local mvmpm = require "mvmpm"
 local shear = require "mvmpm.shear"
 
-local P = mvmpm.params(shear.params {binder = true, bond = 1.0})
+local P = mvmpm.params(shear.params {binder = true, bond = 0.01})
 local sim = shear.build(P)
 sim:output {dir = "out/shear_binder", every = sim.t_end / 20, csv_every = 20}
 return sim

@@ -215,7 +215,7 @@ end
 
 function M.monitor(sim, P, bodies)
   local L = M.L
-  local mon = {P = P, bodies = bodies, rows = {}, events = {},
+  local mon = {P = P, sim = sim, bodies = bodies, rows = {}, events = {},
                strain = {}, force = {}, rotation = {}, bad = {}}
   local free = bodies.free
   for k = 1, #free do mon.rotation[k] = 0 end
@@ -333,7 +333,7 @@ function M.monitor(sim, P, bodies)
       boundary_work = e.boundary_work, kinetic = e.kinetic, stored = e.strain,
       friction = e.dissipated, plastic = e.plastic, viscous = e.viscous,
       residual = e.residual, mean_abs_rotation = rot,
-      bonded_fraction = bonded0 and bonded0 > 0 and e.bonded_area / bonded0 or 1,
+      bonded_fraction = bonded0 and bonded0 > 0 and e.bonded_area / bonded0 or 0,
       jmin = e.jmin, overlap = n_ov, overlap_depth = depth,
       py_error = dpy / scale, narrowest_gap = narrowest(cent),
     }
@@ -351,6 +351,7 @@ function M.monitor(sim, P, bodies)
     if depth > maxdepth then maxdepth = depth end
     if e.jmin < jmin then jmin = e.jmin end
     if dpy / scale > worst_py then worst_py = dpy / scale end
+    if not mon.min_gap or row.narrowest_gap < mon.min_gap then mon.min_gap = row.narrowest_gap end
     if math.abs(e.residual) > maxres then maxres = math.abs(e.residual) end
     mon.max_residual, mon.max_depth, mon.jmin, mon.max_py_error = maxres, maxdepth, jmin, worst_py
     acc.n, acc.fl, acc.fr, acc.nl, acc.nr = 0, 0, 0, 0, 0
@@ -391,6 +392,17 @@ function M.monitor(sim, P, bodies)
   return mon
 end
 
+-- mean equivalent plastic strain over the free grains' particles
+function M.plastic_strain(mon)
+  local ep, body = mon.sim:particles("plastic_strain"), mon.sim:particles("body")
+  local free, sum, n = {}, 0, 0
+  for _, g in ipairs(mon.bodies.free) do free[g.body.id] = true end
+  for i = 1, #ep do
+    if free[body[i]] then sum, n = sum + ep[i], n + 1 end
+  end
+  return n > 0 and sum / n or 0
+end
+
 -- summary figures of a monitor (for tests and reports)
 function M.summary(mon)
   local r = mon.rows[#mon.rows]
@@ -406,6 +418,7 @@ function M.summary(mon)
     max_residual = mon.max_residual / r.work,
     max_depth = mon.max_depth, jmin = mon.jmin, max_py_error = mon.max_py_error,
     boundary_work = r.boundary_work, residual = r.residual,
+    min_gap = mon.min_gap, mean_plastic_strain = M.plastic_strain(mon),
   }
 end
 

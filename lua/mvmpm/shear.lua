@@ -340,6 +340,16 @@ function M.monitor(sim, P, bodies)
     for k = 1, #free do row["rot" .. k] = mon.rotation[k] end
     mon.rows[#mon.rows + 1] = row
     mon.strain[#mon.strain + 1], mon.force[#mon.force + 1] = g, force
+    -- the most locked state: pictures whenever the force reaches a new
+    -- high past the ramp (Figure 7's force chain)
+    if s.outdir ~= "" and g > from and force > (mon.peak_force or 0) then
+      mon.peak_force = force
+      s:render {file = s.outdir .. "/sdiff_peak.png", by = "sdiff", range = {0, P.yield},
+                width = P.width,
+                title = string.format("|s1 - s2| at the largest shear force, strain %.3f", g)}
+      s:render {file = s.outdir .. "/body_peak.png", by = "body", width = P.width,
+                title = string.format("bodies at the largest shear force, strain %.3f", g)}
+    end
     -- stability: every number finite, J > 0, nothing buried
     if e.total ~= e.total or force ~= force or e.jmin ~= e.jmin then
       mon.bad[#mon.bad + 1] = string.format("NaN at strain %.4f", g)

@@ -79,3 +79,21 @@ check-paraview: $(BIN)
 	./$(BIN) run scenarios/cylinder_bounce.lua --set friction=0.1 --out build/check-paraview --quiet
 	pvbatch tests/tools/check_xdmf.py build/check-paraview/particles.xmf \
 	  $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done)
+
+# the granular shear cell (docs/shear.md) at the report's resolution, both
+# scenes and both bond strengths, in the background:
+#   make shear; tail -f out/shear.log
+SHEAR_RUNS = shear_dry:scenarios/shear_dry.lua: \
+             shear_binder:scenarios/shear_binder.lua: \
+             shear_binder_bond0:scenarios/shear_binder.lua:--set=bond=0
+shear: $(BIN)
+	@mkdir -p out
+	nohup sh -c 'for r in $(SHEAR_RUNS); do \
+	  name=$${r%%:*}; rest=$${r#*:}; scene=$${rest%%:*}; opt=$${rest#*:}; \
+	  ./$(BIN) run $$scene $$opt --out out/$$name --quiet || exit 1; \
+	  mkdir -p docs/figures/shear/$$name; \
+	  cp out/$$name/*.png out/$$name/summary.txt out/$$name/locking.csv docs/figures/shear/$$name/; \
+	done; echo shear runs done' > out/shear.log 2>&1 &
+	@echo "running in the background; progress in out/shear.log"
+
+.PHONY: shear

@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "diag_overlap.h"
 #include "lcheck.h"
 #include "lsim.h"
 #include "shape.h"
@@ -476,6 +477,22 @@ static int lwall_force(lua_State *L) {
   return DIM;
 }
 
+/* sim:overlap([maxdepth]) -> n, depth, body, host: particles buried in
+** another body by a cell or more (diag_overlap.h), the deepest in cells,
+** and for a deepest one its body and the body it lies in (ids, or nil) */
+static int loverlap(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  lua_Integer maxd = luaL_optinteger(L, 2, 8);
+  overlap_info o;
+  luaL_argcheck(L, maxd >= 1 && maxd <= 1000, 2, "maxdepth must be 1 ... 1000 cells");
+  if (diag_overlap(&ls->s, (int)maxd, &o)) return luaL_error(L, "overlap: out of memory");
+  lua_pushinteger(L, (lua_Integer)o.n);
+  lua_pushinteger(L, o.depth);
+  if (o.body >= 0) lua_pushinteger(L, o.body + 1); else lua_pushnil(L);
+  if (o.host >= 0) lua_pushinteger(L, o.host + 1); else lua_pushnil(L);
+  return 4;
+}
+
 static int lstable_dt(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   if (!ls->s.started) sim_begin(&ls->s);
@@ -556,7 +573,7 @@ void lsim_open(lua_State *L) {
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
       {"particles", lparticles}, {"stable_dt", lstable_dt},
       {"temperature", lsim_temperature}, {"render", lrender_sim},
-      {"wall_force", lwall_force},
+      {"wall_force", lwall_force}, {"overlap", loverlap},
       {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);

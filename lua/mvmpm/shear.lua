@@ -1,0 +1,500 @@
+-- mvmpm.shear: the granular shear cell of Bardenhagen, Brackbill & Sulsky
+-- (1998), Figures 6-8, shared by scenarios/shear_dry.lua and
+-- scenarios/shear_binder.lua and by tests/verify/shear.lua.
+--
+--   local shear = require "mvmpm.shear"
+--   local P = mvmpm.params(shear.params {binder = true})
+--   local sim, mon = shear.build(P)
+--
+-- The cell (nondimensional: the report's benchmark units, grain diameter
+-- about 1, K = 1, G = 0.5, density 1) is a square of side L = 4, top and
+-- bottom periodic.  Nine cylinders, two of them across the periodic seam,
+-- so that eleven pieces show, as in the report:
+--   attached, radius 0.5, touching the left side:  (0.5, 1), (0.5, 3)
+--   attached, radius 0.5, touching the right side: (3.5, 0) [seam], (3.5, 2)
+--   free grains, radius 0.45: (1.45, 0) [seam], (1.45, 2), (2.55, 1), (2.55, 3)
+--   a smaller free grain, radius 0.35, in the pocket at (1.5, 3)
+-- The free grains form a zig-zag between the two attached columns with
+-- surface gaps of 0.15 to 0.66 (4 to 16 cells at 100 cells): room to roll,
+-- as in the report's dry cell, but not to pass one another without
+-- climbing, so shearing a full period (100 %) makes them collide and bind.
+-- The side walls move tangentially, the left down and the right up, each
+-- at half of rate * L after a smooth start (smoothstep over t_ramp); the
+-- attached cylinders are driven bodies with the velocity of their side.
+-- Average shear strain: strain(t) = (integral of v_right - v_left) / L.
+local mvmpm = require "mvmpm"
+local M = {}
+
+M.L = 4
+M.cylinders = {
+  {x = 0.5, y = 1.0, r = 0.5, side = "left"},
+  {x = 0.5, y = 3.0, r = 0.5, side = "left"},
+  {x = 3.5, y = 0.0, r = 0.5, side = "right"},
+  {x = 3.5, y = 2.0, r = 0.5, side = "right"},
+  {x = 1.25, y = 0.0, r = 0.45},
+  {x = 1.25, y = 2.0, r = 0.45},
+  {x = 2.75, y = 1.0, r = 0.45},
+  {x = 2.75, y = 3.0, r = 0.45},
+  {x = 1.55, y = 3.0, r = 0.35},
+}
+
+-- The parameters both scenes declare; extra entries override or add.
+--   yield: von Mises yield stress of the grains.  0.05 = G/10: an impact
+--     at the relative speed of the sides' motion, v = rate * L / 2, gives
+--     in one-dimensional strain sigma = rho c_L v and a Mises stress of
+--     2G/(lambda + 2G) rho c_L v = 0.039 (v = 0.05), so grains meeting at
+--     the shearing speed stay elastic and only sustained binding (force
+--     chains) yields them.  (HMX's ratio yield/G is about 0.045.)
+--   rate: average shear rate (v_right - v_left) / L; 0.025 moves the
+--     sides at 0.05, 1/26 of the grains' longitudinal wave speed.
+function M.params(extra)
+  local p = {
+    cells = 100,         -- cells across the side
+    ppc = 2,             -- particles per cell per direction
+    rate = 0.025,        -- average shear rate (v_right - v_left) / L
+    strain = 1.0,        -- final average shear strain
+    t_ramp = 4.0,        -- smooth start of the sides' motion
+    friction = 0.3,      -- Coulomb friction, grains with grains and cylinders
+    wall_friction = 0.3, -- the sides with whatever touches them
+    yield = 0.05,        -- grains' yield stress (see above)
+    hardening = 0.0,
+    sample = 0.0025,     -- strain between samples of the force and spins
+    picture = 0.25,      -- strain between pictures
+    width = 600,         -- picture width in pixels
+    binder = false,
+    bond = 0.0,          -- bond strength grain-binder (0: none)
+    binder_K = 0.25,     -- binder bulk modulus
+    binder_G = 0.005,    -- binder long-term shear modulus
+    binder_G1 = 0.02, binder_tau1 = 1.0,  -- Maxwell elements
+    binder_G2 = 0.02, binder_tau2 = 10.0,
+    cfl = 0.25,
+    flip = 1.0,
+  }
+  for k, v in pairs(extra or {}) do p[k] = v end
+  return p
+end
+
+-- displacement of a side moving at speed v after the smooth start:
+-- v s(t / tr) with s(u) = u^2 (3 - 2 u), whose integral over [0, 1] is 1/2
+local function ramp(t, tr)
+  if t >= tr then return 1 end
+  local u = t / tr
+  return u * u * (3 - 2 * u)
+end
+local function ramp_disp(t, tr)
+  if t >= tr then return t - tr / 2 end
+  local u = t / tr
+  return tr * (u ^ 3 - u ^ 4 / 2)
+end
+
+-- average shear strain at time t, and the time of a given strain
+function M.strain_at(P, t) return P.rate * ramp_disp(t, P.t_ramp) end
+function M.time_of(P, g)
+  local t = g / P.rate + P.t_ramp / 2
+  if t >= P.t_ramp then return t end
+  local lo, hi = 0, P.t_ramp   -- within the ramp: bisection
+  for _ = 1, 60 do
+    local mid = (lo + hi) / 2
+    if M.strain_at(P, mid) < g then lo = mid else hi = mid end
+  end
+  return (lo + hi) / 2
+end
+
+-- Build the cell.  Returns the simulation and a monitor (M.monitor).
+function M.build(P)
+  local L = M.L
+  local V = P.rate * L / 2
+  local function side(sign)
+    local mu = tonumber(P.wall_friction) or P.wall_friction
+    return {"wall", friction = mu,
+            velocity = function(t) return 0, sign * V * ramp(t, P.t_ramp) end}
+  end
+  local sim = mvmpm.sim {
+    domain = {x = {0, L}, y = {0, L}}, cell = L / P.cells, ppc = P.ppc,
+    t_end = M.time_of(P, P.strain), cfl = P.cfl, flip = P.flip,
+    sides = {left = side(-1), right = side(1), bottom = "periodic", top = "periodic"},
+    contact = {friction = P.friction},
+  }
+  local grain = mvmpm.plastic {K = 1, G = 0.5, density = 1, yield = P.yield,
+                               hardening = P.hardening, name = "grain"}
+  local bodies = {attached = {left = {}, right = {}}, free = {}}
+  local bond = P.binder and P.bond > 0 and P.bond or nil
+  for k, c in ipairs(M.cylinders) do
+    local spec = {shape = mvmpm.disk {center = {c.x, c.y}, radius = c.r},
+                  material = grain, bond = bond}
+    if c.side then
+      local sign = c.side == "left" and -1 or 1
+      spec.name = string.format("%s%d", c.side, #bodies.attached[c.side] + 1)
+      spec.driven = function(t) return 0, sign * V * ramp(t, P.t_ramp) end
+      local b = sim:body(spec)
+      table.insert(bodies.attached[c.side], b)
+    else
+      spec.name = string.format("grain%d", #bodies.free + 1)
+      local b = sim:body(spec)
+      bodies.free[#bodies.free + 1] = {body = b, r = c.r, x0 = c.x, y0 = c.y}
+    end
+  end
+  if P.binder then
+    local binder = mvmpm.viscoelastic {
+      K = P.binder_K, G_inf = P.binder_G, density = 1, name = "binder",
+      prony = {{G = P.binder_G1, tau = P.binder_tau1}, {G = P.binder_G2, tau = P.binder_tau2}}}
+    bodies.binder = sim:body {name = "binder", shape = mvmpm.rest(), material = binder,
+                              bond = bond}
+  end
+  return sim, M.monitor(sim, P, bodies)
+end
+
+----------------------------------------------------------------------------
+-- Locking events.  The shear force F(strain) is sampled as its mean over
+-- each strain interval P.sample.  Past the ramp, with
+--   mean(k)  the running mean of F over the samples before k (from the
+--            end of the ramp), and
+--   rise(k)  F(k) minus the least F over the window of LOCK_WINDOW strain
+--            that ends at k,
+-- a locking event starts at the first sample where rise > LOCK_RISE * mean
+-- and F > (1 + LOCK_RISE) * mean (the force climbs by more than half its
+-- running mean within 2 % strain, to above 1.5 times that mean) and lasts
+-- until F falls back below the running mean; its peak is the largest F
+-- meanwhile.  A new event needs the previous one ended.
+M.LOCK_RISE = 0.5
+M.LOCK_WINDOW = 0.02
+
+function M.locking(strain, force, from)
+  local events, sum, n, cur = {}, 0, 0, nil
+  for k = 1, #force do
+    local g, f = strain[k], force[k]
+    if g >= from then
+      local mean = n > 0 and sum / n or nil
+      if mean and mean > 0 then
+        if cur then
+          if f > cur.peak then cur.peak, cur.peak_strain = f, g end
+          if f < mean then cur.end_strain = g; events[#events + 1] = cur; cur = nil end
+        else
+          local least = f
+          for j = k - 1, 1, -1 do
+            if strain[j] < g - M.LOCK_WINDOW or strain[j] < from then break end
+            if force[j] < least then least = force[j] end
+          end
+          if f - least > M.LOCK_RISE * mean and f > (1 + M.LOCK_RISE) * mean then
+            cur = {strain = g, base = least, mean = mean, peak = f, peak_strain = g}
+          end
+        end
+      end
+      sum, n = sum + f, n + 1
+    end
+  end
+  if cur then cur.end_strain = strain[#strain]; events[#events + 1] = cur end
+  return events
+end
+
+----------------------------------------------------------------------------
+-- The monitor: per step, the forces of the sides and the attached
+-- cylinders (averaged over each sample); per sample, spins, energies,
+-- invariants; files when the run writes output (sim.outdir set).
+local function csv_write(path, header, rows)
+  local f = assert(io.open(path .. ".part", "w"))
+  f:write(table.concat(header, ","), "\n")
+  for _, r in ipairs(rows) do
+    local s = {}
+    for j, h in ipairs(header) do
+      local v = r[h]
+      s[j] = type(v) == "number" and string.format("%.9g", v) or tostring(v)
+    end
+    f:write(table.concat(s, ","), "\n")
+  end
+  f:close()
+  assert(os.rename(path .. ".part", path))
+end
+
+-- nearest-image separation along the periodic y
+local function dy(a, b, L)
+  local d = a - b
+  if d > L / 2 then d = d - L elseif d < -L / 2 then d = d + L end
+  return d
+end
+
+function M.monitor(sim, P, bodies)
+  local L = M.L
+  local mon = {P = P, sim = sim, bodies = bodies, rows = {}, events = {},
+               strain = {}, force = {}, rotation = {}, bad = {}}
+  local free = bodies.free
+  for k = 1, #free do mon.rotation[k] = 0 end
+  -- accumulators over the current sample
+  local acc = {n = 0, fl = 0, fr = 0, nl = 0, nr = 0, t0 = 0}
+  local imp = {0, 0}          -- impulse on the non-driven material, y and x
+  local p0                    -- its momentum at the start
+  local omega_prev, t_prev    -- spins at the last sample (trapezoid rule)
+  local bonded0               -- bonded area after the first step
+  local maxres, maxdepth, worst_py, jmin = 0, 0, 0, math.huge
+  -- the attached cylinders move rigidly with their sides: their kinetic
+  -- energy 1/2 M v(t)^2 is boundary work that never enters the material
+  local m_att = 0
+  for _, side in ipairs {"left", "right"} do
+    for _, b in ipairs(bodies.attached[side]) do m_att = m_att + b:mass() end
+  end
+  local V = P.rate * L / 2
+  local next_sample, next_picture = P.sample, 0
+  local from = M.strain_at(P, P.t_ramp)
+  mon.ramp_strain = from
+
+  local function material_momentum()
+    local px, py = 0, 0
+    for _, g in ipairs(free) do
+      local d = g.body:diag()
+      px, py = px + d.mass * d.vx, py + d.mass * d.vy
+    end
+    if bodies.binder then
+      local d = bodies.binder:diag()
+      px, py = px + d.mass * d.vx, py + d.mass * d.vy
+    end
+    return px, py
+  end
+
+  local function side_force(name)
+    local fx, fy = sim:wall_force(name)
+    for _, b in ipairs(bodies.attached[name]) do
+      local bx, by = b:force()
+      fx, fy = fx + bx, fy + by
+    end
+    return fx, fy
+  end
+
+  local function picture(s, g)
+    if s.outdir == "" then return end
+    local tag = string.format("%03d", math.floor(g * 100 + 0.5))
+    s:render {file = string.format("%s/sdiff_%s.png", s.outdir, tag), by = "sdiff",
+              range = {0, P.yield}, width = P.width,
+              title = string.format("|s1 - s2|, shear strain %.2f", g)}
+    s:render {file = string.format("%s/body_%s.png", s.outdir, tag), by = "body",
+              width = P.width, title = string.format("bodies, shear strain %.2f", g)}
+    if bodies.binder and P.bond > 0 then
+      s:render {file = string.format("%s/bond_%s.png", s.outdir, tag), by = "bond",
+                range = {0, P.bond}, width = P.width,
+                title = string.format("bond strength left, shear strain %.2f", g)}
+    end
+  end
+
+  -- the narrowest surface gap between two grains (free or attached),
+  -- from their centroids and seeded radii, in cells
+  local all = {}
+  for _, g in ipairs(free) do all[#all + 1] = {body = g.body, r = g.r} end
+  for _, side in ipairs {"left", "right"} do
+    for k, b in ipairs(bodies.attached[side]) do all[#all + 1] = {body = b, r = 0.5, side = side, k = k} end
+  end
+  local function narrowest(cent)
+    local best = math.huge
+    for i = 1, #all do
+      for j = i + 1, #all do
+        if not (all[i].side and all[j].side) then
+          local a, b = cent[i], cent[j]
+          local ddx, ddy = a[1] - b[1], dy(a[2], b[2], L)
+          local gap = math.sqrt(ddx * ddx + ddy * ddy) - all[i].r - all[j].r
+          if gap < best then best = gap end
+        end
+      end
+    end
+    return best / sim.cell
+  end
+
+  local function sample(s)
+    local g = M.strain_at(P, s.t)
+    local e = s:energy()
+    local fl, fr = acc.fl / acc.n, acc.fr / acc.n
+    local force = (fr - fl) / 2
+    -- spins of the free grains, integrated by the trapezoid rule
+    local cent, om = {}, {}
+    for k, gr in ipairs(free) do
+      local d = gr.body:diag()
+      om[k] = d.omega
+      cent[k] = {d.x, d.y}
+      mon.rotation[k] = mon.rotation[k] + 0.5 * (om[k] + omega_prev[k]) * (s.t - t_prev)
+    end
+    for k = #free + 1, #all do
+      local x, y = all[k].body:centroid()
+      cent[k] = {x, y}
+    end
+    omega_prev, t_prev = om, s.t
+    local rot = 0
+    for k = 1, #free do rot = rot + math.abs(mon.rotation[k]) end
+    rot = rot / #free
+    -- invariants
+    local n_ov, depth = s:overlap()
+    local px, py = material_momentum()
+    local dpy = math.abs(py - p0[2] - imp[1])
+    local scale = 0
+    for _, gr in ipairs(free) do scale = scale + gr.body:mass() end
+    if bodies.binder then scale = scale + bodies.binder:mass() end
+    scale = scale * P.rate * L / 2
+    local v = V * ramp(s.t, P.t_ramp)
+    local work = e.boundary_work - 0.5 * m_att * v * v
+    local row = {
+      t = s.t, strain = g, work = work, kinetic_free = e.kinetic - 0.5 * m_att * v * v, force = force, normal = (acc.nl - acc.nr) / (2 * acc.n),
+      f_left = fl, f_right = fr,
+      boundary_work = e.boundary_work, kinetic = e.kinetic, stored = e.strain,
+      friction = e.dissipated, plastic = e.plastic, viscous = e.viscous,
+      residual = e.residual, mean_abs_rotation = rot,
+      bonded_fraction = bonded0 and bonded0 > 0 and e.bonded_area / bonded0 or 0,
+      jmin = e.jmin, overlap = n_ov, overlap_depth = depth,
+      py_error = dpy / scale, narrowest_gap = narrowest(cent),
+    }
+    for k = 1, #free do row["rot" .. k] = mon.rotation[k] end
+    mon.rows[#mon.rows + 1] = row
+    mon.strain[#mon.strain + 1], mon.force[#mon.force + 1] = g, force
+    -- the most locked state: pictures whenever the force reaches a new
+    -- high past the ramp (Figure 7's force chain)
+    if s.outdir ~= "" and g > from and force > (mon.peak_force or 0) then
+      mon.peak_force = force
+      s:render {file = s.outdir .. "/sdiff_peak.png", by = "sdiff", range = {0, P.yield},
+                width = P.width,
+                title = string.format("|s1 - s2| at the largest shear force, strain %.3f", g)}
+      s:render {file = s.outdir .. "/body_peak.png", by = "body", width = P.width,
+                title = string.format("bodies at the largest shear force, strain %.3f", g)}
+    end
+    -- stability: every number finite, J > 0, nothing buried
+    if e.total ~= e.total or force ~= force or e.jmin ~= e.jmin then
+      mon.bad[#mon.bad + 1] = string.format("NaN at strain %.4f", g)
+    end
+    if not (e.jmin > 0) then mon.bad[#mon.bad + 1] = string.format("J <= 0 at strain %.4f", g) end
+    if n_ov > 0 then
+      mon.bad[#mon.bad + 1] = string.format("%d particles buried %d cells at strain %.4f", n_ov, depth, g)
+    end
+    if depth > maxdepth then maxdepth = depth end
+    if e.jmin < jmin then jmin = e.jmin end
+    if dpy / scale > worst_py then worst_py = dpy / scale end
+    if not mon.min_gap or row.narrowest_gap < mon.min_gap then mon.min_gap = row.narrowest_gap end
+    if math.abs(e.residual) > maxres then maxres = math.abs(e.residual) end
+    mon.max_residual, mon.max_depth, mon.jmin, mon.max_py_error = maxres, maxdepth, jmin, worst_py
+    acc.n, acc.fl, acc.fr, acc.nl, acc.nr = 0, 0, 0, 0, 0
+  end
+
+  sim:every {steps = 1, fn = function(s)
+    if not p0 then
+      -- after the first step: the material's momentum (zero at rest) and
+      -- the bonded area the interfaces start with
+      p0 = {0, 0}
+      omega_prev, t_prev = {}, 0
+      for k = 1, #free do omega_prev[k] = 0 end
+      bonded0 = s:energy().bonded_area
+      picture(s, 0)
+      next_picture = P.picture
+    end
+    local lx, ly = side_force("left")
+    local rx, ry = side_force("right")
+    imp[1] = imp[1] + (ly + ry) * s.dt
+    imp[2] = imp[2] + (lx + rx) * s.dt
+    acc.n, acc.fl, acc.fr = acc.n + 1, acc.fl + ly, acc.fr + ry
+    acc.nl, acc.nr = acc.nl + lx, acc.nr + rx
+    local g = M.strain_at(P, s.t)
+    if g >= next_sample - 1e-12 * P.sample then
+      sample(s)
+      next_sample = next_sample + P.sample
+    end
+    local due = g >= next_picture - 1e-9
+    if due then
+      picture(s, next_picture)
+      next_picture = next_picture + P.picture
+    end
+    -- the files, at each picture and at the end
+    if s.outdir ~= "" and #mon.rows > 0 and (due or s.t >= s.t_end) then
+      M.report(mon, s.outdir)
+    end
+  end}
+  return mon
+end
+
+-- mean equivalent plastic strain over the free grains' particles
+function M.plastic_strain(mon)
+  local ep, body = mon.sim:particles("plastic_strain"), mon.sim:particles("body")
+  local free, sum, n = {}, 0, 0
+  for _, g in ipairs(mon.bodies.free) do free[g.body.id] = true end
+  for i = 1, #ep do
+    if free[body[i]] then sum, n = sum + ep[i], n + 1 end
+  end
+  return n > 0 and sum / n or 0
+end
+
+-- summary figures of a monitor (for tests and reports)
+function M.summary(mon)
+  local r = mon.rows[#mon.rows]
+  mon.events = M.locking(mon.strain, mon.force, mon.ramp_strain)
+  local fsum, n = 0, 0
+  for k, g in ipairs(mon.strain) do
+    if g >= mon.ramp_strain then fsum, n = fsum + mon.force[k], n + 1 end
+  end
+  return {
+    strain = r.strain, mean_force = n > 0 and fsum / n or 0,
+    events = #mon.events, mean_abs_rotation = r.mean_abs_rotation,
+    bonded_fraction = r.bonded_fraction, work = r.work,
+    max_residual = mon.max_residual / r.work,
+    max_depth = mon.max_depth, jmin = mon.jmin, max_py_error = mon.max_py_error,
+    boundary_work = r.boundary_work, residual = r.residual,
+    min_gap = mon.min_gap, mean_plastic_strain = M.plastic_strain(mon),
+  }
+end
+
+-- CSV and PNG files into dir
+function M.report(mon, dir)
+  local P = mon.P
+  local s = M.summary(mon)
+  mon.written = #mon.rows
+  local header = {"t", "strain", "force", "normal", "f_left", "f_right", "boundary_work",
+                  "work", "kinetic", "kinetic_free", "stored", "friction", "plastic", "viscous", "residual",
+                  "mean_abs_rotation", "bonded_fraction", "jmin", "overlap",
+                  "overlap_depth", "py_error", "narrowest_gap"}
+  for k = 1, #mon.bodies.free do header[#header + 1] = "rot" .. k end
+  csv_write(dir .. "/shear.csv", header, mon.rows)
+  csv_write(dir .. "/locking.csv", {"strain", "peak_strain", "end_strain", "base", "peak", "mean"},
+            mon.events)
+  local col = function(name)
+    local t = {}
+    for k, r in ipairs(mon.rows) do t[k] = r[name] end
+    return t
+  end
+  local ex, ey = {}, {}
+  for k, ev in ipairs(mon.events) do ex[k], ey[k] = ev.peak_strain, ev.peak end
+  local series = {{x = mon.strain, y = mon.force, label = "shear force (F_right - F_left)/2"},
+                  {x = mon.strain, y = col("normal"), label = "normal force on the sides"}}
+  if #ex > 0 then series[#series + 1] = {x = ex, y = ey, style = "points", label = "locking events"} end
+  mvmpm.plot {file = dir .. "/force_strain.png", xlabel = "average shear strain",
+              ylabel = "force per unit depth", title = "Shear force and locking events",
+              series = series}
+  local rs = {}
+  for k = 1, #mon.bodies.free do
+    rs[k] = {x = mon.strain, y = col("rot" .. k), label = mon.bodies.free[k].body.name}
+  end
+  rs[#rs + 1] = {x = mon.strain, y = (function()
+    local t = {}
+    for k, g in ipairs(mon.strain) do t[k] = g / 2 end
+    return t
+  end)(), label = "affine: strain / 2"}
+  mvmpm.plot {file = dir .. "/rotation.png", xlabel = "average shear strain",
+              ylabel = "rotation (rad, counter-clockwise)", title = "Grain rotations",
+              series = rs}
+  mvmpm.plot {file = dir .. "/energy.png", xlabel = "average shear strain", ylabel = "energy",
+              title = "Energy budget", series = {
+                {x = mon.strain, y = col("work"), label = "work into the material"},
+                {x = mon.strain, y = col("stored"), label = "stored (strain)"},
+                {x = mon.strain, y = col("kinetic_free"), label = "kinetic"},
+                {x = mon.strain, y = col("friction"), label = "friction"},
+                {x = mon.strain, y = col("plastic"), label = "plastic"},
+                {x = mon.strain, y = col("viscous"), label = "viscous"},
+                {x = mon.strain, y = col("residual"), label = "residual"}}}
+  if mon.bodies.binder then
+    local d = {}
+    for k, f in ipairs(col("bonded_fraction")) do d[k] = 1 - f end
+    mvmpm.plot {file = dir .. "/debond.png", xlabel = "average shear strain",
+                ylabel = "debonded fraction of the interface", yrange = {0, 1},
+                title = string.format("Debonding (bond strength %g)", P.bond),
+                series = {{x = mon.strain, y = d}}}
+  end
+  local f = assert(io.open(dir .. "/summary.txt", "w"))
+  local keys = {}
+  for k in pairs(s) do keys[#keys + 1] = k end
+  table.sort(keys)
+  for _, k in ipairs(keys) do f:write(string.format("%-20s %.6g\n", k, s[k])) end
+  for _, b in ipairs(mon.bad) do f:write("invariant: ", b, "\n") end
+  f:close()
+  return s
+end
+
+return M

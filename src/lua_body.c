@@ -128,7 +128,12 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
   for (d = 0; d < DIM; d++) {
     double a = (sh->lo[d] - g->lo[d]) / hp - 1, b = (sh->hi[d] - g->lo[d]) / hp + 1;
     N[d] = g->cells[d] * ppc;
-    if (g->periodic[d]) {
+    if (g->periodic[d] && !(isfinite(a) && isfinite(b))) {
+      /* unbounded (rest): one period; casting an infinity to int is
+      ** undefined, and on x86 gave an empty range */
+      i0[d] = 0;
+      i1[d] = N[d];
+    } else if (g->periodic[d]) {
       i0[d] = (int)floor(a);
       i1[d] = (int)ceil(b);
       if (i1[d] - i0[d] > N[d]) i1[d] = i0[d] + N[d];

@@ -505,7 +505,7 @@ function M.bed(spec)
   if not ok then
     bad(2, "could not place %d grains at packing %g with gap %g: growth stalled at %.3f of "
         .. "full size (at full size, with half the gap on every radius, the grains would cover "
-        .. "%.3f of the area; this method reaches about 0.8 of that); lower packing or gap, "
+        .. "%.3f of the area; this method stalls near 0.8 of effective packing); lower packing or gap, "
         .. "or change the classes", #g, p.packing, p.gap, s, eff)
   end
   local A = p.width * p.height

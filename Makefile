@@ -5,6 +5,7 @@
 #   make test SAN=1  the same under AddressSanitizer/UndefinedBehaviorSanitizer
 #   make bench     speed figures (rates and ratios), never part of the tests
 #   make figures   the documentation's figures (docs/figures/*.png)
+#   make pbx-scale the PBX grain bed's cost against its grain count (a few minutes)
 #   make check-paraview  ParaView's pvbatch opens a run's XDMF (needs Debian's paraview)
 
 DEB_PACKAGES = build-essential pkg-config liblua5.4-dev libhdf5-dev hdf5-tools \
@@ -58,6 +59,11 @@ test: $(BIN) $(UNITBIN)
 bench: $(BIN)
 	@bash bench/run.sh ./$(BIN)
 
+# one process per bed, so that each peak resident size is the bed's own
+PBX_SIDES ?= 0.65e-3 1.2e-3 1.7e-3 2.4e-3
+pbx-scale: $(BIN)
+	@for s in $(PBX_SIDES); do PBX_SIDE=$$s ./$(BIN) test bench/pbx_scale.lua | grep '^pbx'; done
+
 clean:
 	rm -rf build build-san mvmpm
 
@@ -69,7 +75,7 @@ hard: $(BIN)
 figures: $(BIN)
 	./$(BIN) test docs/figures/fig5.lua
 
-.PHONY: all deps unit test bench clean check-paraview figures hard
+.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

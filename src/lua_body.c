@@ -129,7 +129,9 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
     double a = (sh->lo[d] - g->lo[d]) / hp - 1, b = (sh->hi[d] - g->lo[d]) / hp + 1;
     N[d] = g->cells[d] * ppc;
     if (g->periodic[d] && !(isfinite(a) && isfinite(b))) {
-      i0[d] = 0;   /* unbounded (the rest): one period, where it is */
+      /* unbounded (rest): one period; casting an infinity to int is
+      ** undefined, and on x86 gave an empty range */
+      i0[d] = 0;
       i1[d] = N[d];
     } else if (g->periodic[d]) {
       i0[d] = (int)floor(a);

@@ -31,6 +31,7 @@
 #include "particles.h"
 
 typedef struct h5meta {
+  const char *format;     /* "format" attribute; NULL: "mvmpm-snapshot-1" */
   double time;
   long step;
   double cell;            /* grid spacing */
@@ -42,6 +43,28 @@ typedef struct h5meta {
 /* 0 on success; -1 with a message naming the file in err */
 int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
                  char *err, size_t errlen);
+
+/*
+** Checkpoints (ckpt.c) use the same file with other fields and more:
+** the fields whose flags meet `flags` (PF_RESTART), and 1-D datasets in
+** the group "/state", one per blob.  On reading, each blob named is
+** looked up, its type must match, and data is malloc'ed (the caller
+** frees it, also after a failure); a missing one is an error.
+*/
+enum { H5B_F64, H5B_I64, H5B_U8 };
+typedef struct h5blob {
+  const char *name;
+  int type;               /* H5B_F64 (double), H5B_I64 (int64_t), H5B_U8 */
+  size_t n;               /* entries */
+  void *data;
+} h5blob;
+int out_h5_write_state(const char *path, const particles *ps, unsigned flags,
+                       const h5meta *meta, const h5blob *b, int nb,
+                       char *err, size_t errlen);
+/* as out_h5_read, but the file's "format" must be meta->format (NULL:
+** a snapshot), and the blobs are read too */
+int out_h5_read_state(const char *path, particles *ps, h5meta *meta,
+                      h5blob *b, int nb, char *err, size_t errlen);
 
 /* Read a snapshot into an initialised, empty store: the built-in fields
 ** are filled, other datasets become run-time fields.  meta->time/step/cell

@@ -311,6 +311,16 @@ static int strcmpp(const void *a, const void *b) {
 }
 
 /* the overrides in force, "name=value" lines in name order */
+static void params(lua_State *L, sbuf *s);
+
+char *ckpt_overrides(lua_State *L) {
+  sbuf s = {0};
+  params(L, &s);
+  if (s.bad) { free(s.b); return NULL; }
+  if (!s.b) return calloc(1, 1);
+  return s.b;
+}
+
 static void params(lua_State *L, sbuf *s) {
   char *line[256];
   int n = 0, k;

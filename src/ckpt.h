@@ -57,6 +57,9 @@ char *ckpt_string(const ckpt *c, int which);
 ** what does not match */
 int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
                size_t errlen);
+/* the --set overrides in force as a checkpoint stores them (malloc'ed;
+** NULL when out of memory) */
+char *ckpt_overrides(lua_State *L);
 /* the newest DIR/checkpoint_NNNNNN.h5 into out; 0, or -1 with err */
 int ckpt_latest(const char *dir, char *out, size_t len, char *err,
                 size_t errlen);

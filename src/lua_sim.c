@@ -269,7 +269,9 @@ static int lgc(lua_State *L) {
   lsim *ls = luaL_checkudata(L, 1, LSIM_MT);
   if (ls->ok) {
     char err[256];
-    if (ls->csv_open) out_csv_close(&ls->csv, err, sizeof err); /* no raising in __gc */
+    /* no raising in __gc; an interrupted run's table stays .part */
+    if (ls->csv_open && ls->interrupted) out_csv_leave(&ls->csv);
+    else if (ls->csv_open) out_csv_close(&ls->csv, err, sizeof err);
     free(ls->occ);
     free(ls->snaps);
     sim_free(&ls->s);

@@ -104,3 +104,8 @@ int out_csv_close(csvout *c, char *err, size_t errlen) {
   }
   return 0;
 }
+
+void out_csv_leave(csvout *c) {
+  if (c->f) fclose(c->f);
+  c->f = NULL;
+}

@@ -32,5 +32,7 @@ long out_csv_sync(csvout *c, char *err, size_t errlen);
 /* flush and rename into place; 0 or -1.  After a failed write the file
 ** stays "<path>.part" (it may end in a torn row) and -1 says so. */
 int out_csv_close(csvout *c, char *err, size_t errlen);
+/* close, leaving the table "<path>.part": the run is not finished */
+void out_csv_leave(csvout *c);
 
 #endif

@@ -306,15 +306,16 @@ static int cmd_run(int argc, char **argv) {
   lua_getglobal(L, "sim");
   ls = lua_touserdata(L, -1);
   if (rc && ls->interrupted) {
-    fprintf(stderr, "\n%s: interrupted at step %ld, t = %g; checkpoint written: "
-            "%s\ncontinue with: %s run --restart %s\n", progname, ls->s.step,
+    fprintf(stderr, "%s%s: interrupted at step %ld, t = %g; checkpoint written: "
+            "%s\ncontinue with: %s run --restart %s\n",
+            ls->progress && isatty(2) ? "\n" : "", progname, ls->s.step,
             ls->s.t, ls->ck_last, progname, ls->ck_last);
     lua_close(L);
     free(stored_scene);
     return 130;
   }
   if (rc) {
-    fprintf(stderr, "\n");
+    if (ls->progress && isatty(2)) fprintf(stderr, "\n"); /* end the progress line */
     lua_pop(L, 1);
     fail(L, NULL);
     if (ls->ck_last[0])

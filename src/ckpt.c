@@ -420,14 +420,13 @@ void ckpt_write(lua_State *L, int simidx) {
     b[CB_STATE] = (h5blob){"lua_state", H5B_U8, statelen, (void *)state};
     b[CB_FIELDS] = (h5blob){"fields", H5B_U8, fl.n, fl.b};
     memset(&meta, 0, sizeof meta);
-    meta.format = CKPT_FORMAT;
     meta.time = s->t;
     meta.step = s->step;
     meta.cell = s->g.h;
     meta.units = ls->units;
     meta.scene = scene;
     ckname(path, sizeof path, ls->outdir, ls->ck_count);
-    r = out_h5_write_state(path, &s->ps, PF_RESTART, &meta, b, CB_N, err,
+    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta, b, CB_N, err,
                            sizeof err);
     if (r == 0 && syncdir(ls->outdir)) {
       snprintf(err, sizeof err, "%s: cannot sync the directory (%s)",
@@ -477,8 +476,8 @@ int ckpt_read(ckpt *c, const char *path, char *err, size_t errlen) {
     c->b[k].name = blobnames[k];
     c->b[k].type = blobtypes[k];
   }
-  c->meta.format = CKPT_FORMAT;
-  return out_h5_read_state(path, &c->ps, &c->meta, c->b, CB_N, err, errlen);
+  return out_h5_read_state(path, CKPT_FORMAT, &c->ps, &c->meta, c->b, CB_N,
+                           err, errlen);
 }
 
 void ckpt_free(ckpt *c) {

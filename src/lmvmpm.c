@@ -171,8 +171,14 @@ int lmvmpm_load(lua_State *L, const char *path) {
   lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.scene");
   lua_pushnil(L);
   lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.last");
-  lua_pushcfunction(L, traceback);
   /* sandboxed, a precompiled scene is refused: bytecode is not checked */
+  if (src[0] == LUA_SIGNATURE[0] && sandbox_on(L)) {
+    free(src);
+    lua_pushfstring(L, "%s: a precompiled scene (bytecode) is not allowed "
+                    "under --sandbox", path);
+    return -1;
+  }
+  lua_pushcfunction(L, traceback);
   if (luaL_loadbufferx(L, src, strlen(src), lua_pushfstring(L, "@%s", path),
                        sandbox_on(L) ? "t" : NULL)) {
     free(src);

@@ -32,6 +32,7 @@ typedef struct h5s {
   int failed;       /* only the first failure is reported */
   hid_t file;
   unsigned flags;   /* the fields written: PF_OUTPUT or PF_RESTART */
+  const char *format; /* the "format" attribute written */
   void *buf;        /* row-major staging for (n, ncomp) datasets */
   size_t bufsz;
   H5E_auto2_t efunc; /* HDF5's error printer, restored on the way out */
@@ -153,7 +154,7 @@ static int putmeta(h5s *S, const h5meta *meta) {
   int64_t step = meta->step;
   int dim = DIM;
   hid_t f = S->file;
-  if (putstr(S, f, "/", "format", meta->format ? meta->format : FORMAT) ||
+  if (putstr(S, f, "/", "format", S->format) ||
       putattr(S, f, "/", "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
               &meta->time) ||
       putattr(S, f, "/", "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step) ||
@@ -437,7 +438,8 @@ static int commit(h5s *S, int fd, const char *tmp, const char *img,
 }
 
 /* the temp file is opened first, so a bad directory fails before work */
-int out_h5_write_state(const char *path, const particles *ps, unsigned flags,
+int out_h5_write_state(const char *path, const char *format,
+                       const particles *ps, unsigned flags,
                        const h5meta *meta, const h5blob *b, int nb,
                        char *err, size_t errlen) {
   h5s S;
@@ -447,6 +449,7 @@ int out_h5_write_state(const char *path, const particles *ps, unsigned flags,
   int fd = -1, r = -1;
   begin(&S, path, err, errlen);
   S.flags = flags;
+  S.format = format ? format : FORMAT;
   errno = 0;
   tmp = malloc(strlen(path) + 5);
   if (!tmp) {
@@ -474,7 +477,8 @@ out:
 
 int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
                  char *err, size_t errlen) {
-  return out_h5_write_state(path, ps, PF_OUTPUT, meta, NULL, 0, err, errlen);
+  return out_h5_write_state(path, NULL, ps, PF_OUTPUT, meta, NULL, 0, err,
+                            errlen);
 }
 
 /* }====================================================== */
@@ -758,17 +762,14 @@ static int getblobs(h5s *S, h5blob *b, int nb) {
   return r;
 }
 
-int out_h5_read_state(const char *path, particles *ps, h5meta *meta,
-                      h5blob *b, int nb, char *err, size_t errlen) {
+int out_h5_read_state(const char *path, const char *format, particles *ps,
+                      h5meta *meta, h5blob *b, int nb, char *err,
+                      size_t errlen) {
   h5s S;
   h5meta dummy;
-  const char *want;
+  const char *want = format ? format : FORMAT;
   int r, k;
-  if (!meta) {
-    memset(&dummy, 0, sizeof dummy);
-    meta = &dummy;
-  }
-  want = meta->format ? meta->format : FORMAT;
+  if (!meta) meta = &dummy;
   for (k = 0; k < nb; k++) b[k].data = NULL, b[k].n = 0;
   begin(&S, path, err, errlen);
   meta->units = meta->scene = meta->source = NULL;
@@ -789,8 +790,7 @@ int out_h5_read_state(const char *path, particles *ps, h5meta *meta,
 
 int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
                 size_t errlen) {
-  if (meta) meta->format = NULL;
-  return out_h5_read_state(path, ps, meta, NULL, 0, err, errlen);
+  return out_h5_read_state(path, NULL, ps, meta, NULL, 0, err, errlen);
 }
 
 /* }====================================================== */

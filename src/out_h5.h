@@ -31,7 +31,6 @@
 #include "particles.h"
 
 typedef struct h5meta {
-  const char *format;     /* "format" attribute; NULL: "mvmpm-snapshot-1" */
   double time;
   long step;
   double cell;            /* grid spacing */
@@ -58,13 +57,16 @@ typedef struct h5blob {
   size_t n;               /* entries */
   void *data;
 } h5blob;
-int out_h5_write_state(const char *path, const particles *ps, unsigned flags,
+/* format: the root's "format" attribute (NULL: "mvmpm-snapshot-1") */
+int out_h5_write_state(const char *path, const char *format,
+                       const particles *ps, unsigned flags,
                        const h5meta *meta, const h5blob *b, int nb,
                        char *err, size_t errlen);
-/* as out_h5_read, but the file's "format" must be meta->format (NULL:
-** a snapshot), and the blobs are read too */
-int out_h5_read_state(const char *path, particles *ps, h5meta *meta,
-                      h5blob *b, int nb, char *err, size_t errlen);
+/* as out_h5_read, but the file's "format" must be format (NULL: a
+** snapshot), and the blobs are read too */
+int out_h5_read_state(const char *path, const char *format, particles *ps,
+                      h5meta *meta, h5blob *b, int nb, char *err,
+                      size_t errlen);
 
 /* Read a snapshot into an initialised, empty store: the built-in fields
 ** are filled, other datasets become run-time fields.  meta->time/step/cell

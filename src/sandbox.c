@@ -56,6 +56,33 @@ static void drop(lua_State *L, int tbl, const char *name) {
   lua_setfield(L, tbl, name);
 }
 
+/* __index of the globals and of os: a name the sandbox took away gets
+** an error that says so, instead of "attempt to index a nil value" */
+static int missing(lua_State *L) {
+  const char *prefix = lua_tostring(L, lua_upvalueindex(1));
+  lua_pushvalue(L, 2);
+  if (lua_rawget(L, lua_upvalueindex(2)) != LUA_TNIL)
+    return luaL_error(L, "%s%s is not available under --sandbox (%s)", prefix,
+                      lua_tostring(L, 2), lua_tostring(L, -1));
+  return 0;
+}
+
+/* t's metatable: __index = missing, with a table name -> why */
+static void explain(lua_State *L, int t, const char *prefix,
+                    const char *const names[], const char *why) {
+  int k;
+  lua_createtable(L, 0, 1);
+  lua_pushstring(L, prefix);
+  lua_newtable(L);
+  for (k = 0; names[k]; k++) {
+    lua_pushstring(L, why);
+    lua_setfield(L, -2, names[k]);
+  }
+  lua_pushcclosure(L, missing, 2);
+  lua_setfield(L, -2, "__index");
+  lua_setmetatable(L, t);
+}
+
 void sandbox_open(lua_State *L, const char *root) {
   static const char *const gone[] = {"io", "debug", "package", "dofile",
                                      "loadfile", NULL};
@@ -90,6 +117,8 @@ void sandbox_open(lua_State *L, const char *root) {
   lua_pushcclosure(L, sload, 1);
   lua_setfield(L, g, "load");
   for (k = 0; gone[k]; k++) drop(L, g, gone[k]);
+  explain(L, g, "", gone, "files and the system are out of a scene's reach; "
+          "output goes through sim:output, sim:snapshot and sim:render");
   /* os: only the clocks and dates */
   lua_getfield(L, g, "os");
   lua_newtable(L);
@@ -97,10 +126,21 @@ void sandbox_open(lua_State *L, const char *root) {
     lua_getfield(L, -2, oskeep[k]);
     lua_setfield(L, -2, oskeep[k]);
   }
+  {
+    static const char *const osgone[] = {"execute", "exit", "getenv",
+        "remove", "rename", "tmpname", "setlocale", "difftime", NULL};
+    explain(L, lua_gettop(L), "os.", osgone,
+            "only os.clock, os.time and os.date are");
+  }
   lua_setfield(L, g, "os");
   lua_pop(L, 1);
   lua_getfield(L, g, "string");
   drop(L, lua_gettop(L), "dump");
+  {
+    static const char *const strgone[] = {"dump", NULL};
+    explain(L, lua_gettop(L), "string.", strgone,
+            "bytecode cannot be loaded here");
+  }
   lua_pop(L, 2);
 }
 

@@ -374,6 +374,13 @@ void ckpt_write(lua_State *L, int simidx) {
   int k, r, top = lua_gettop(L);
   long csv = run_sync(L, ls);
   simidx = lua_absindex(L, simidx);
+  /* first what may raise an error (a function in the state), before
+  ** anything is allocated */
+  lsim_uv(L, simidx, "state");
+  if (lua_istable(L, -1)) {
+    lstate_save(L, -1);
+    state = lua_tolstring(L, -1, &statelen);
+  }
   memset(&v, 0, sizeof v);
   ls->ck_count++; /* what a restart continues from */
   visit_sim(&v, s);
@@ -398,11 +405,6 @@ void ckpt_write(lua_State *L, int simidx) {
   scene = lua_isstring(L, -1) ? lua_tostring(L, -1) : ls->scene;
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   source = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
-  lsim_uv(L, simidx, "state");
-  if (lua_istable(L, -1)) { /* may raise: the state holds a function */
-    lstate_save(L, -1);
-    state = lua_tolstring(L, -1, &statelen);
-  }
   if (v.failed || rn.bad || in.bad || fl.bad || sf.bad || pa.bad || !st || !sn) {
     snprintf(err, sizeof err, "checkpoint: %s", v.failed ? v.err : "out of memory");
     r = -1;

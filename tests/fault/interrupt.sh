@@ -11,7 +11,8 @@ cd "$tmp"
 ok $? "reference run"
 "$bin" run "$scene" "${set_[@]}" --out run --quiet >out.txt 2>&1 &
 pid=$!
-sleep 0.7
+# once it is stepping (its second snapshot is out), however slow the build
+for _ in $(seq 600); do [ -e run/particles_000001.h5 ] && break; sleep 0.05; done
 kill -INT "$pid"
 wait "$pid"
 rc=$?

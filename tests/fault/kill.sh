@@ -19,7 +19,15 @@ for round in 1 2 3 4; do
     "$bin" run --restart run --quiet >/dev/null 2>&1 &
   fi
   pid=$!
-  sleep "$(awk -v s="$RANDOM" 'BEGIN { printf "%.2f", 0.4 + (s % 80) / 100 }')"
+  # wait for a checkpoint newer than the round started with (so every
+  # round makes progress, however slow the build), then a random moment
+  before=$(ls run/checkpoint_*.h5 2>/dev/null | tail -1)
+  for _ in $(seq 600); do
+    now=$(ls run/checkpoint_*.h5 2>/dev/null | tail -1)
+    [ -n "$now" ] && [ "$now" != "$before" ] && break
+    sleep 0.05
+  done
+  sleep "$(awk -v s="$RANDOM" 'BEGIN { printf "%.2f", (s % 50) / 100 }')"
   kill -KILL "$pid" 2>/dev/null
   wait "$pid" 2>/dev/null
   tmps=$(ls run/*.tmp 2>/dev/null | wc -l)

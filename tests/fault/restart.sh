@@ -66,4 +66,16 @@ mkdir empty
 "$bin" run --restart empty >out.txt 2>&1
 [ $? -eq 1 ] && has out.txt "no checkpoint_NNNNNN.h5"
 ok $? "a directory without checkpoints is refused"
+# a state that cannot be saved is named when the checkpoint is due
+cat >badstate.lua <<'LUA'
+local mvmpm = require "mvmpm"
+local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1/8, t_end = 0.05}
+sim:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2},
+          material = mvmpm.elastic {K = 1, G = 0.5, density = 1}}
+sim:state {a = {1, 2, {fn = print}}}
+return sim
+LUA
+"$bin" run badstate.lua --out bs --checkpoint-every 0.01 --quiet >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "state.a[3].fn is a function"
+ok $? "a function in sim:state is refused by its place" "$(head -1 out.txt)"
 finish

@@ -98,6 +98,5 @@ int run_mkdirs(const char *path, char *err, size_t errlen);
 /* flush the diagnostics table to disk; its length in bytes, -1 if none */
 long run_sync(lua_State *L, lsim *ls);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);
-int run_close(lua_State *L, lsim *ls);
 
 #endif

@@ -154,15 +154,6 @@ static void out_start(lua_State *L, lsim *ls) {
   }
 }
 
-int run_close(lua_State *L, lsim *ls) {
-  char err[512];
-  if (ls->csv_open && ls->csv.f && out_csv_close(&ls->csv, err, sizeof err)) {
-    ls->csv_open = 0;
-    return luaL_error(L, "%s", err);
-  }
-  return 0;
-}
-
 /* drives and moving walls given as functions of time */
 static void drives(lua_State *L, int simidx, lsim *ls) {
   int d, k;

@@ -20,6 +20,7 @@
 #include "lmvmpm.h"
 #include "lsim.h"
 #include "lualib.h"
+#include "sandbox.h"
 
 static void regtable(lua_State *L, const char *name) {
   if (lua_getfield(L, LUA_REGISTRYINDEX, name) != LUA_TTABLE) {
@@ -170,8 +171,16 @@ int lmvmpm_load(lua_State *L, const char *path) {
   lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.scene");
   lua_pushnil(L);
   lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.last");
+  /* sandboxed, a precompiled scene is refused: bytecode is not checked */
+  if (src[0] == LUA_SIGNATURE[0] && sandbox_on(L)) {
+    free(src);
+    lua_pushfstring(L, "%s: a precompiled scene (bytecode) is not allowed "
+                    "under --sandbox", path);
+    return -1;
+  }
   lua_pushcfunction(L, traceback);
-  if (luaL_loadbuffer(L, src, strlen(src), lua_pushfstring(L, "@%s", path))) {
+  if (luaL_loadbufferx(L, src, strlen(src), lua_pushfstring(L, "@%s", path),
+                       sandbox_on(L) ? "t" : NULL)) {
     free(src);
     lua_replace(L, base + 1);
     lua_settop(L, base + 1);
@@ -206,6 +215,9 @@ int lmvmpm_load(lua_State *L, const char *path) {
 static int load(lua_State *L) {
   const char *path = luaL_checkstring(L, 1);
   int top;
+  if (sandbox_on(L))
+    return luaL_error(L, "mvmpm.load(\"%s\"): not allowed under --sandbox "
+                      "(it reads other files)", path);
   lua_settop(L, 2);
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides"); /* 3: saved */
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.declared");  /* 4: saved */
@@ -293,9 +305,11 @@ void lmvmpm_setpath(lua_State *L, const char *argv0) {
       lua_pushfstring(L, "%s/?.lua;%s/?/init.lua;%s", env ? env : probe,
                       env ? env : probe, lua_tostring(L, -1));
       /* probe ends in /lua/mvmpm: trim to /lua */
+      if (!env) snprintf(probe, sizeof probe, "%s/lua", dir);
+      lua_pushstring(L, env ? env : probe); /* for the sandbox's require */
+      lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.luadir");
       if (!env) {
         lua_pop(L, 1);
-        snprintf(probe, sizeof probe, "%s/lua", dir);
         lua_pushfstring(L, "%s/?.lua;%s/?/init.lua;%s", probe, probe,
                         lua_tostring(L, -1));
       }

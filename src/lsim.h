@@ -44,6 +44,14 @@ typedef struct lsim {
   char units[32];
   int drives, sidefns, nevery;
   int tempfn;             /* uv.temperature is a function of time */
+  /* checkpoints (ckpt.c) */
+  double ck_every, ck_next; /* simulated time between them; 0: none */
+  int ck_count;           /* written so far (the next is ck_count + 1) */
+  int ck_on_interrupt;    /* Ctrl-C: checkpoint, then stop (mvmpm run) */
+  int interrupted;        /* the run stopped on Ctrl-C */
+  int restarted;          /* the output continues a checkpoint's */
+  long csv_resume;        /* restarted: the table's length then, or -1 */
+  char ck_last[1100];     /* the newest checkpoint written */
 } lsim;
 
 typedef struct lbody {
@@ -85,7 +93,10 @@ int lrender_sim(lua_State *L);
 void lrender_open(lua_State *L, int modidx);
 /* run.c */
 int run_until(lua_State *L, int simidx, double t_end, long max_steps);
+/* mkdir -p; 0, or -1 with err naming the directory and the reason */
+int run_mkdirs(const char *path, char *err, size_t errlen);
+/* flush the diagnostics table to disk; its length in bytes, -1 if none */
+long run_sync(lua_State *L, lsim *ls);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);
-int run_close(lua_State *L, lsim *ls);
 
 #endif

@@ -21,6 +21,7 @@
 #include "plot_png.h"
 #include "png.h"
 #include "render_png.h"
+#include "sandbox.h"
 
 static const char *const cmaps[] = {"auto", "seq", "div", NULL};
 static const char *const styles[] = {"line", "points", "both", NULL};
@@ -89,13 +90,13 @@ int lrender_sim(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   render_opts o;
-  char err[2048], deftitle[160];
+  char err[2048], deftitle[160], path[1100];
   const char **names;
   int b, d;
   luaL_checktype(L, 2, LUA_TTABLE);
   chk_keys(L, 2, what, keys);
   memset(&o, 0, sizeof o);
-  file = reqstr(L, 2, what, "file");
+  file = sandbox_path(L, reqstr(L, 2, what, "file"), what, path, sizeof path);
   o.by = optstr(L, 2, what, "by", "body");
   o.width = pixels(L, 2, what, "width", 800, RENDER_MINW, PNG_MAXDIM);
   o.has_range = optrange(L, 2, what, "range", o.range);
@@ -153,12 +154,12 @@ static int lplot(lua_State *L) {
   const char *what = "plot", *file;
   plot_opts o;
   plot_series *sv;
-  char err[1024], sw[48];
+  char err[1024], sw[48], path[1100];
   int ns, k, top;
   luaL_checktype(L, 1, LUA_TTABLE);
   chk_keys(L, 1, what, keys);
   memset(&o, 0, sizeof o);
-  file = reqstr(L, 1, what, "file");
+  file = sandbox_path(L, reqstr(L, 1, what, "file"), what, path, sizeof path);
   o.title = optstr(L, 1, what, "title", NULL);
   o.xlabel = optstr(L, 1, what, "xlabel", NULL);
   o.ylabel = optstr(L, 1, what, "ylabel", NULL);

@@ -9,6 +9,7 @@
 #include "diag_overlap.h"
 #include "lcheck.h"
 #include "lsim.h"
+#include "sandbox.h"
 #include "shape.h"
 
 lsim *lsim_check(lua_State *L, int idx) {
@@ -270,7 +271,9 @@ static int lgc(lua_State *L) {
   lsim *ls = luaL_checkudata(L, 1, LSIM_MT);
   if (ls->ok) {
     char err[256];
-    if (ls->csv_open) out_csv_close(&ls->csv, err, sizeof err); /* no raising in __gc */
+    /* no raising in __gc; an interrupted run's table stays .part */
+    if (ls->csv_open && ls->interrupted) out_csv_leave(&ls->csv);
+    else if (ls->csv_open) out_csv_close(&ls->csv, err, sizeof err);
     free(ls->occ);
     free(ls->snaps);
     sim_free(&ls->s);
@@ -339,19 +342,27 @@ static int levery(lua_State *L) {
   return 0;
 }
 
-/* sim:output{dir = "out/x", every = 0.5, csv_every = 1} */
+/* sim:output{dir = "out/x", every = 0.5, csv_every = 1, checkpoint = 2} */
 static int loutput(lua_State *L) {
-  static const char *const keys[] = {"dir", "every", "csv_every", NULL};
+  static const char *const keys[] = {"dir", "every", "csv_every",
+                                     "checkpoint", NULL};
   lsim *ls = lsim_check(L, 1);
+  char buf[1100];
   luaL_checktype(L, 2, LUA_TTABLE);
   chk_keys(L, 2, "output", keys);
   /* verification scripts load scenes to measure them, not to write files */
   if (lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.testing") == LUA_TBOOLEAN) return 0;
   lua_pop(L, 1);
   lua_getfield(L, 2, "dir");
-  if (!lua_isnil(L, -1) && !ls->outdir[0])  /* --out on the command line wins */
+  /* sandboxed, the command line fixes the directory: a dir is only
+  ** checked, so a scene cannot aim anywhere else */
+  if (!lua_isnil(L, -1) && sandbox_on(L))
+    sandbox_path(L, luaL_checkstring(L, -1), "output", buf, sizeof buf);
+  else if (!lua_isnil(L, -1) && !ls->outdir[0])  /* --out on the command line wins */
     snprintf(ls->outdir, sizeof ls->outdir, "%s", luaL_checkstring(L, -1));
   lua_pop(L, 1);
+  ls->ck_every = chk_num(L, 2, "output", "checkpoint", ls->ck_every, 0,
+                         HUGE_VAL, 0);
   ls->out_every = chk_num(L, 2, "output", "every", ls->out_every, 0, HUGE_VAL, 0);
   ls->csv_every = (long)chk_num(L, 2, "output", "csv_every",
                                 ls->csv_every ? (double)ls->csv_every : 1, 0, 1e15,
@@ -424,8 +435,26 @@ static int lbodies(lua_State *L) {
 
 static int lsnapshot(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
-  run_snapshot(L, ls, luaL_checkstring(L, 2));
+  char buf[1100];
+  run_snapshot(L, ls, sandbox_path(L, luaL_checkstring(L, 2), "snapshot",
+                                   buf, sizeof buf));
   return 0;
+}
+
+/* sim:state(tbl) -> tbl: a plain table a checkpoint saves and a restart
+** puts back (lstate.h), for callbacks that accumulate */
+static int lstate(lua_State *L) {
+  lsim_check(L, 1);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  lua_getiuservalue(L, 1, 1);
+  if (lua_getfield(L, -1, "state") != LUA_TNIL && !lua_rawequal(L, -1, 2))
+    luaL_error(L, "sim:state: a state table is already registered (put "
+                  "everything in one table)");
+  lua_pop(L, 1);
+  lua_pushvalue(L, 2);
+  lua_setfield(L, -2, "state");
+  lua_settop(L, 2);
+  return 1;
 }
 
 /* sim:particles("stress") -> {xx = {...}, yy = {...}, ...} (copies);
@@ -573,7 +602,7 @@ void lsim_open(lua_State *L) {
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
       {"particles", lparticles}, {"stable_dt", lstable_dt},
       {"temperature", lsim_temperature}, {"render", lrender_sim},
-      {"wall_force", lwall_force}, {"overlap", loverlap},
+      {"wall_force", lwall_force}, {"overlap", loverlap}, {"state", lstate},
       {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);

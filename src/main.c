@@ -4,11 +4,13 @@
 */
 #include <glob.h>
 #include <math.h>
+#include <sys/stat.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
+#include "ckpt.h"
 #include "interrupt.h"
 #include "lauxlib.h"
 #include "lmvmpm.h"
@@ -16,12 +18,16 @@
 #include "lualib.h"
 #include "render_cmd.h"
 #include "repl.h"
+#include "sandbox.h"
 
 static const char *progname = "mvmpm";
 
 static void usage(FILE *f) {
   fprintf(f,
 "usage: %s run SCENE.lua [--set name=value ...] [--out DIR] [--quiet]\n"
+"                [--checkpoint-every T] [--sandbox]\n"
+"       %s run --restart CHECKPOINT|DIR [SCENE.lua] [--set ...] [--quiet]\n"
+"                [--checkpoint-every T] [--sandbox]\n"
 "       %s repl [SCENE.lua] [--set name=value ...] [--out DIR]\n"
 "       %s test [FILE.lua ...]        (default: tests/verify/*.lua)\n"
 "       %s render SNAPSHOT.h5 [--by KEY] [--out FILE.png] [--width N]\n"
@@ -41,8 +47,15 @@ static void usage(FILE *f) {
 "       pressure, sdiff (principal stress difference), speed, or a field\n"
 "       such as velocity.x, stress.xy, mass (default: body); FILE defaults\n"
 "       to the snapshot's name with _KEY.png\n"
-"--set  overrides a parameter the scene declares with mvmpm.params{...}\n",
-          progname, progname, progname, progname, progname);
+"--set  overrides a parameter the scene declares with mvmpm.params{...}\n"
+"--checkpoint-every T  writes DIR/checkpoint_NNNNNN.h5 every T of simulated\n"
+"       time (the newest two are kept); --restart continues one bit for bit\n"
+"       (DIR: its newest), in its directory, with the same --set values\n"
+"--sandbox  the scene gets no io, os (but clock/time/date), debug, package,\n"
+"       dofile/loadfile or bytecode, and writes only inside DIR\n"
+"exit status: 0 done, 1 error, 2 usage, 130 stopped by Ctrl-C (a checkpoint\n"
+"       was written; the message says how to continue)\n",
+          progname, progname, progname, progname, progname, progname);
 }
 
 static lua_State *newstate(const char *argv0) {
@@ -63,9 +76,17 @@ static int fail(lua_State *L, const char *what) {
   return 1;
 }
 
-/* --set a=b and --out DIR; returns the remaining positional argument */
-static int options(lua_State *L, int argc, char **argv, int i, const char **scene,
-                   const char **out, int *quiet) {
+typedef struct runopts {
+  const char *scene, *out, *restart;
+  int quiet, sandbox, nset;
+  double ck_every;         /* < 0: not given */
+} runopts;
+
+/* the options of run and repl (repl takes only --set, --out, --quiet) */
+static int options(lua_State *L, int argc, char **argv, int i, runopts *o,
+                   int run) {
+  memset(o, 0, sizeof *o);
+  o->ck_every = -1;
   for (; i < argc; i++) {
     if (strcmp(argv[i], "--set") == 0 || strncmp(argv[i], "--set=", 6) == 0) {
       const char *kv = argv[i][5] == '=' ? argv[i] + 6 : (i + 1 < argc ? argv[++i] : NULL);
@@ -78,16 +99,33 @@ static int options(lua_State *L, int argc, char **argv, int i, const char **scen
       memcpy(name, kv, eq - kv);
       name[eq - kv] = 0;
       lmvmpm_override(L, name, eq + 1);
+      o->nset++;
     } else if (strcmp(argv[i], "--out") == 0) {
       if (i + 1 >= argc) { fprintf(stderr, "%s: --out needs a directory\n", progname); return -1; }
-      *out = argv[++i];
+      o->out = argv[++i];
     } else if (strcmp(argv[i], "--quiet") == 0) {
-      *quiet = 1;
+      o->quiet = 1;
+    } else if (run && strcmp(argv[i], "--sandbox") == 0) {
+      o->sandbox = 1;
+    } else if (run && strcmp(argv[i], "--restart") == 0) {
+      if (i + 1 >= argc) {
+        fprintf(stderr, "%s: --restart needs a checkpoint file or its directory\n", progname);
+        return -1;
+      }
+      o->restart = argv[++i];
+    } else if (run && strcmp(argv[i], "--checkpoint-every") == 0) {
+      char *end = NULL;
+      if (i + 1 < argc) o->ck_every = strtod(argv[++i], &end);
+      if (!end || *end || !(o->ck_every > 0) || !isfinite(o->ck_every)) {
+        fprintf(stderr, "%s: --checkpoint-every needs a time > 0 (simulated "
+                        "time between checkpoints)\n", progname);
+        return -1;
+      }
     } else if (argv[i][0] == '-' && argv[i][1]) {
       fprintf(stderr, "%s: unknown option '%s' (see %s --help)\n", progname, argv[i], progname);
       return -1;
-    } else if (!*scene) {
-      *scene = argv[i];
+    } else if (!o->scene) {
+      o->scene = argv[i];
     } else {
       fprintf(stderr, "%s: unexpected argument '%s'\n", progname, argv[i]);
       return -1;
@@ -116,46 +154,184 @@ static int traceback(lua_State *L) {
   return 1;
 }
 
+/* the directory part of a path ("." for a bare name) */
+static void dirname_of(const char *path, char *out, size_t n) {
+  const char *b = strrchr(path, '/');
+  if (!b) snprintf(out, n, ".");
+  else if (b == path) snprintf(out, n, "/");
+  else snprintf(out, n, "%.*s", (int)(b - path), path);
+}
+
+/*
+** Before the scene loads again: which checkpoint, its directory, and the
+** parameters.  With no --set the stored ones apply; with some, they must
+** be the stored ones (a run continued with other parameters would be
+** neither run).  Prints the reason and returns -1 on failure.
+*/
+static int restart_prepare(lua_State *L, runopts *o, ckpt *c, char *outdir,
+                           size_t outlen) {
+  char path[1100], err[1400];
+  struct stat st;
+  char *stored, *given;
+  if (o->out) {
+    fprintf(stderr, "%s: --out cannot be given with --restart: the run "
+            "continues in its checkpoint's directory\n", progname);
+    return -1;
+  }
+  snprintf(path, sizeof path, "%s", o->restart);
+  if (stat(path, &st) == 0 && S_ISDIR(st.st_mode) &&
+      ckpt_latest(o->restart, path, sizeof path, err, sizeof err)) {
+    fprintf(stderr, "%s: %s\n", progname, err);
+    return -1;
+  }
+  if (ckpt_read(c, path, err, sizeof err)) {
+    fprintf(stderr, "%s: %s\n", progname, err);
+    return -1;
+  }
+  dirname_of(path, outdir, outlen);
+  stored = ckpt_string(c, CB_PARAMS);
+  given = o->nset ? ckpt_overrides(L) : NULL;
+  if (!stored || (o->nset && !given)) {
+    fprintf(stderr, "%s: out of memory\n", progname);
+    return -1;
+  }
+  if (o->nset && strcmp(stored, given) != 0) {
+    fprintf(stderr, "%s: %s: the run was made with other parameters; give the "
+            "same --set values or none (then the stored ones apply)\n"
+            "  stored: %s\n  given:  %s\n", progname, path,
+            stored[0] ? stored : "(none)\n", given);
+    free(stored);
+    free(given);
+    return -1;
+  }
+  if (!o->nset) {
+    char *line = stored, *nl;
+    for (; (nl = strchr(line, '\n')); line = nl + 1) {
+      char *eq = strchr(line, '=');
+      *nl = '\0';
+      if (!eq) continue;
+      *eq = '\0';
+      lmvmpm_override(L, line, eq + 1);
+    }
+  }
+  free(stored);
+  free(given);
+  return 0;
+}
+
+/* after the scene loaded again: it must be the same text */
+static int restart_same_scene(lua_State *L, const ckpt *c, const char *scene) {
+  char *src = ckpt_string(c, CB_SOURCE);
+  int same;
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
+  same = src && lua_isstring(L, -1) && strcmp(src, lua_tostring(L, -1)) == 0;
+  lua_pop(L, 1);
+  free(src);
+  if (!same)
+    fprintf(stderr, "%s: %s is not the scene %s was written from (its text "
+            "differs); a changed scene cannot continue the run\n", progname,
+            scene, c->path);
+  return same ? 0 : -1;
+}
+
 static int cmd_run(int argc, char **argv) {
-  const char *scene = NULL, *out = NULL;
-  int quiet = 0, rc;
+  runopts o;
+  int rc;
   lua_State *L = newstate(argv[0]);
   lsim *ls;
   double w0;
-  char name[256];
-  if (options(L, argc, argv, 2, &scene, &out, &quiet)) return 2;
-  if (!scene) { usage(stderr); return 2; }
-  if (lmvmpm_load(L, scene) || lmvmpm_check_overrides(L)) return fail(L, NULL);
+  char name[256], root[1024] = "", err[1400], *stored_scene = NULL;
+  ckpt c;
+  memset(&c, 0, sizeof c);
+  particles_init(&c.ps);
+  if (options(L, argc, argv, 2, &o, 1)) return 2;
+  if (!o.scene && !o.restart) { usage(stderr); return 2; }
+  if (o.restart) {
+    if (restart_prepare(L, &o, &c, root, sizeof root)) { ckpt_free(&c); return 1; }
+    if (!o.scene) o.scene = stored_scene = ckpt_string(&c, CB_SCENE);
+  } else if (o.out) snprintf(root, sizeof root, "%s", o.out);
+  else {
+    basename_noext(o.scene, name, sizeof name);
+    snprintf(root, sizeof root, "out/%s", name);
+  }
+  if (o.sandbox) sandbox_open(L, root);
+  if (lmvmpm_load(L, o.scene) || lmvmpm_check_overrides(L)) {
+    fail(L, NULL);
+    ckpt_free(&c);
+    free(stored_scene);
+    return 1;
+  }
   ls = lua_touserdata(L, -1);
-  if (out) { snprintf(ls->outdir, sizeof ls->outdir, "%s", out); ls->out_enabled = 1; }
+  if (o.restart || o.sandbox || o.out) { /* the command line decides */
+    snprintf(ls->outdir, sizeof ls->outdir, "%s", root);
+    ls->out_enabled = 1;
+  }
   if (!ls->outdir[0]) {
-    basename_noext(scene, name, sizeof name);
-    snprintf(ls->outdir, sizeof ls->outdir, "out/%s", name);
+    snprintf(ls->outdir, sizeof ls->outdir, "%s", root);
     ls->out_enabled = 1;
   }
   if (ls->out_enabled && ls->out_every <= 0) ls->out_every = ls->s.t_end / 20;
   if (ls->out_enabled && ls->csv_every <= 0) ls->csv_every = 1;
-  ls->progress = !quiet;
+  if (o.restart) {
+    int bad = restart_same_scene(L, &c, o.scene);
+    if (!bad && (bad = ckpt_apply(L, -1, &c, err, sizeof err)))
+      fprintf(stderr, "%s: %s\n", progname, err);
+    if (bad) {
+      ckpt_free(&c);
+      free(stored_scene);
+      lua_close(L);
+      return 1;
+    }
+    if (!o.quiet)
+      printf("%s: continuing from %s at step %ld, t = %g\n", o.scene, c.path,
+             ls->s.step, ls->s.t);
+    ckpt_free(&c);
+    if (o.ck_every > 0) ls->ck_next = ls->s.t + o.ck_every;
+  }
+  if (o.ck_every > 0) ls->ck_every = o.ck_every;
+  ls->ck_on_interrupt = 1;
+  ls->progress = !o.quiet;
   lua_setglobal(L, "sim");
   w0 = now();
-  interrupt_install(L);
+  /* no Lua hook: Ctrl-C stops the run at the next step boundary, where a
+  ** checkpoint can be written; a second Ctrl-C kills */
+  interrupt_install(NULL);
   lua_pushcfunction(L, traceback);
   lua_getglobal(L, "sim");
   lua_getfield(L, -1, "run");
   lua_insert(L, -2);
   rc = lua_pcall(L, 1, 0, -3);
   interrupt_uninstall();
+  interrupt_clear();
+  lua_getglobal(L, "sim");
+  ls = lua_touserdata(L, -1);
+  if (rc && ls->interrupted) {
+    fprintf(stderr, "%s%s: interrupted at step %ld, t = %g; checkpoint written: "
+            "%s\ncontinue with: %s run --restart %s\n",
+            ls->progress && isatty(2) ? "\n" : "", progname, ls->s.step,
+            ls->s.t, ls->ck_last, progname, ls->ck_last);
+    lua_close(L);
+    free(stored_scene);
+    return 130;
+  }
   if (rc) {
-    fprintf(stderr, "\n");
+    if (ls->progress && isatty(2)) fprintf(stderr, "\n"); /* end the progress line */
+    lua_pop(L, 1);
     fail(L, NULL);
+    if (ls->ck_last[0])
+      fprintf(stderr, "%s: the newest checkpoint is %s (continue with: %s run "
+              "--restart %s)\n", progname, ls->ck_last, progname, ls->ck_last);
   }
   lua_settop(L, 0);
   lua_getglobal(L, "sim");
   ls = lua_touserdata(L, -1);
-  if (run_close(L, ls) == 0 && !rc && !quiet) {
+  if (ls->csv_open && ls->csv.f && out_csv_close(&ls->csv, err, sizeof err)) {
+    fprintf(stderr, "%s: %s\n", progname, err);
+    if (!rc) rc = 1;
+  } else if (!rc && !o.quiet) {
     sim *s = &ls->s;
     printf("%s: %ld steps to t = %g, %zu particles, %d bodies, %.2f s wall\n",
-           scene, s->step, s->t, s->ps.n, s->nbody, now() - w0);
+           o.scene, s->step, s->t, s->ps.n, s->nbody, now() - w0);
     printf("energy: initial %.6g  kinetic %.6g  strain %.6g  dissipated %.6g  "
            "boundary work %.6g  residual %.3g (%.3g%% of initial)\n",
            s->e.initial, s->e.kinetic, s->e.strain, s->e.friction, s->e.boundary,
@@ -169,16 +345,19 @@ static int cmd_run(int argc, char **argv) {
            ls->outdir, ls->nsnap);
   }
   lua_close(L);
+  free(stored_scene);
   return rc ? 1 : 0;
 }
 
 static int cmd_repl(int argc, char **argv) {
-  const char *scene = NULL, *out = NULL;
-  int quiet = 0;
+  runopts o;
+  const char *scene, *out;
   lua_State *L = newstate(argv[0]);
   char hist[1024];
   const char *home = getenv("HOME");
-  if (options(L, argc, argv, 2, &scene, &out, &quiet)) return 2;
+  if (options(L, argc, argv, 2, &o, 0)) return 2;
+  scene = o.scene;
+  out = o.out;
   if (luaL_dostring(L, "require 'mvmpm.repl'"))
     fprintf(stderr, "%s: %s\n", progname, lua_tostring(L, -1));
   lua_settop(L, 0);

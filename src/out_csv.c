@@ -6,6 +6,8 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include "out_csv.h"
 
 int out_csv_open(csvout *c, const char *path, const char *const *cols,
@@ -33,11 +35,55 @@ int out_csv_row(csvout *c, const double *vals, char *err, size_t errlen) {
   for (k = 1; k < c->ncol; k++) fprintf(c->f, ",%.17g", vals[k]);
   fputc('\n', c->f);
   if (fflush(c->f) || ferror(c->f)) {
+    c->bad = 1;
     snprintf(err, errlen, "%s.part: write failed (%s)", c->path,
              strerror(errno));
     return -1;
   }
   return 0;
+}
+
+int out_csv_resume(csvout *c, const char *path, long length, int ncol,
+                   char *err, size_t errlen) {
+  char part[1040];
+  struct stat st;
+  memset(c, 0, sizeof *c);
+  snprintf(c->path, sizeof c->path, "%s", path);
+  snprintf(part, sizeof part, "%s.part", path);
+  c->ncol = ncol;
+  if (stat(part, &st) != 0) {
+    if (errno != ENOENT || stat(path, &st) != 0 || rename(path, part) != 0) {
+      snprintf(err, errlen, "%s: cannot continue the diagnostics table: "
+               "neither it nor %s can be used (%s)", path, part,
+               strerror(errno));
+      return -1;
+    }
+  }
+  if (st.st_size < length) {
+    snprintf(err, errlen, "%s: the diagnostics table is shorter (%lld bytes) "
+             "than at the checkpoint (%ld bytes)", part,
+             (long long)st.st_size, length);
+    return -1;
+  }
+  /* where "a" puts the position before the first write is the C
+  ** library's choice: seek, so out_csv_sync's ftell is the length */
+  if (truncate(part, length) != 0 || !(c->f = fopen(part, "a")) ||
+      fseek(c->f, 0, SEEK_END) != 0) {
+    snprintf(err, errlen, "%s: cannot continue (%s)", part, strerror(errno));
+    return -1;
+  }
+  return 0;
+}
+
+long out_csv_sync(csvout *c, char *err, size_t errlen) {
+  long n;
+  if (!c->f) return -1;
+  if (fflush(c->f) || fsync(fileno(c->f)) || (n = ftell(c->f)) < 0) {
+    c->bad = 1;
+    snprintf(err, errlen, "%s.part: cannot sync (%s)", c->path, strerror(errno));
+    return -2;
+  }
+  return n;
 }
 
 int out_csv_close(csvout *c, char *err, size_t errlen) {
@@ -47,9 +93,19 @@ int out_csv_close(csvout *c, char *err, size_t errlen) {
   snprintf(part, sizeof part, "%s.part", c->path);
   bad = fclose(c->f) != 0;
   c->f = NULL;
+  if (c->bad && !bad) {
+    snprintf(err, errlen, "%s: a write failed, so the table stays %s and "
+             "may end in a torn row", c->path, part);
+    return -1;
+  }
   if (bad || rename(part, c->path)) {
     snprintf(err, errlen, "%s: cannot finish (%s)", c->path, strerror(errno));
     return -1;
   }
   return 0;
+}
+
+void out_csv_leave(csvout *c) {
+  if (c->f) fclose(c->f);
+  c->f = NULL;
 }

@@ -31,6 +31,8 @@ typedef struct h5s {
   size_t errlen;
   int failed;       /* only the first failure is reported */
   hid_t file;
+  unsigned flags;   /* the fields written: PF_OUTPUT or PF_RESTART */
+  const char *format; /* the "format" attribute written */
   void *buf;        /* row-major staging for (n, ncomp) datasets */
   size_t bufsz;
   H5E_auto2_t efunc; /* HDF5's error printer, restored on the way out */
@@ -152,7 +154,7 @@ static int putmeta(h5s *S, const h5meta *meta) {
   int64_t step = meta->step;
   int dim = DIM;
   hid_t f = S->file;
-  if (putstr(S, f, "/", "format", FORMAT) ||
+  if (putstr(S, f, "/", "format", S->format) ||
       putattr(S, f, "/", "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE,
               &meta->time) ||
       putattr(S, f, "/", "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &step) ||
@@ -280,7 +282,7 @@ out:
 static int stage(h5s *S, const particles *ps) {
   int f, w = 1;
   for (f = 0; f < ps->nfields; f++)
-    if ((ps->fields[f].flags & PF_OUTPUT) && ps->fields[f].ncomp > w)
+    if ((ps->fields[f].flags & S->flags) && ps->fields[f].ncomp > w)
       w = ps->fields[f].ncomp;
   if (ps->n == 0 || w == 1) return 0;
   errno = 0;
@@ -315,7 +317,7 @@ static int create(h5s *S, const char *tmp, const particles *ps) {
   int f;
   hid_t fapl;
   for (f = 0; f < ps->nfields; f++)
-    if (ps->fields[f].flags & PF_OUTPUT) raw += (size_t)ps->fields[f].ncomp;
+    if (ps->fields[f].flags & S->flags) raw += (size_t)ps->fields[f].ncomp;
   /* grow in a few large steps: a quarter of the raw data at a time */
   grow = raw > SIZE_MAX / 2 / (ps->n + 1) ? SIZE_MAX / 4 : raw * 2 * ps->n;
   if (grow < ((size_t)1 << 20)) grow = (size_t)1 << 20;
@@ -355,16 +357,51 @@ static int image(h5s *S, void **img, size_t *size) {
   return r < 0 ? fail(S, "cannot close the file in memory") : 0;
 }
 
+/* the file type (file != 0) or memory type of a blob; HDF5's type ids
+** are variables set when the library opens, not constants */
+static hid_t blobtype(int type, int file) {
+  switch (type) {
+    case H5B_F64: return file ? H5T_IEEE_F64LE : H5T_NATIVE_DOUBLE;
+    case H5B_I64: return file ? H5T_STD_I64LE : H5T_NATIVE_INT64;
+    default: return file ? H5T_STD_U8LE : H5T_NATIVE_UINT8;
+  }
+}
+
+/* the blobs, each a 1-D contiguous dataset in the group "state" */
+static int putblobs(h5s *S, const h5blob *b, int nb) {
+  hid_t g;
+  int k, r = 0;
+  if (nb == 0) return 0;
+  errno = 0;
+  g = H5Gcreate2(S->file, "state", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (g < 0) return fail(S, "cannot create group 'state'");
+  for (k = 0; k < nb && r == 0; k++) {
+    hsize_t n = b[k].n;
+    hid_t sp = H5Screate_simple(1, &n, NULL), d = -1;
+    if (sp >= 0)
+      d = H5Dcreate2(g, b[k].name, blobtype(b[k].type, 1), sp, H5P_DEFAULT,
+                     H5P_DEFAULT, H5P_DEFAULT);
+    if (d < 0 || (n > 0 && H5Dwrite(d, blobtype(b[k].type, 0), H5S_ALL,
+                                    H5S_ALL, H5P_DEFAULT, b[k].data) < 0))
+      r = fail(S, "cannot write dataset 'state/%s'", b[k].name);
+    if (d >= 0) H5Dclose(d);
+    if (sp >= 0) H5Sclose(sp);
+  }
+  H5Gclose(g);
+  return r;
+}
+
 static int build(h5s *S, const char *tmp, const particles *ps,
-                 const h5meta *meta, void **img, size_t *size) {
+                 const h5meta *meta, const h5blob *b, int nb, void **img,
+                 size_t *size) {
   int f;
   if (deflate_ok(S) || stage(S, ps) || create(S, tmp, ps) ||
       putmeta(S, meta))
     return -1;
   for (f = 0; f < ps->nfields; f++)
-    if ((ps->fields[f].flags & PF_OUTPUT) && putfield(S, ps, &ps->fields[f]))
+    if ((ps->fields[f].flags & S->flags) && putfield(S, ps, &ps->fields[f]))
       return -1;
-  if (putsource(S, meta->source)) return -1;
+  if (putsource(S, meta->source) || putblobs(S, b, nb)) return -1;
   return image(S, img, size);
 }
 
@@ -401,14 +438,18 @@ static int commit(h5s *S, int fd, const char *tmp, const char *img,
 }
 
 /* the temp file is opened first, so a bad directory fails before work */
-int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
-                 char *err, size_t errlen) {
+int out_h5_write_state(const char *path, const char *format,
+                       const particles *ps, unsigned flags,
+                       const h5meta *meta, const h5blob *b, int nb,
+                       char *err, size_t errlen) {
   h5s S;
   char *tmp;
   void *img = NULL;
   size_t size = 0;
   int fd = -1, r = -1;
   begin(&S, path, err, errlen);
+  S.flags = flags;
+  S.format = format ? format : FORMAT;
   errno = 0;
   tmp = malloc(strlen(path) + 5);
   if (!tmp) {
@@ -421,7 +462,7 @@ int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
     fail(&S, "cannot create file");
     goto out;
   }
-  if (build(&S, tmp, ps, meta, &img, &size) == 0) {
+  if (build(&S, tmp, ps, meta, b, nb, &img, &size) == 0) {
     r = commit(&S, fd, tmp, img, size);
     fd = -1; /* commit closed it */
   }
@@ -432,6 +473,12 @@ out:
   free(img);
   free(tmp);
   return r;
+}
+
+int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
+                 char *err, size_t errlen) {
+  return out_h5_write_state(path, NULL, ps, PF_OUTPUT, meta, NULL, 0, err,
+                            errlen);
 }
 
 /* }====================================================== */
@@ -494,16 +541,17 @@ out:
   return r;
 }
 
-static int getmeta(h5s *S, h5meta *meta) {
+static int getmeta(h5s *S, h5meta *meta, const char *want) {
   char fmt[64];
   int64_t step;
   int dim;
   int r = getstr(S, S->file, "/", "format", fmt, sizeof fmt);
   if (r < 0) return -1;
   errno = 0;
-  if (r > 0 || strcmp(fmt, FORMAT) != 0)
-    return fail(S, "not an mvmpm snapshot (format '%s', expected '%s')", fmt,
-                FORMAT);
+  if (r > 0 || strcmp(fmt, want) != 0)
+    return fail(S, "not an mvmpm %s (format '%s', expected '%s')",
+                strcmp(want, FORMAT) == 0 ? "snapshot" : "checkpoint", fmt,
+                want);
   if (getattr(S, "dim", H5T_NATIVE_INT, &dim)) return -1;
   if (dim != DIM)
     return fail(S, "the snapshot is %d-D but this build is %d-D", dim, DIM);
@@ -664,12 +712,65 @@ static int getfields(h5s *S, particles *ps) {
   return 0;
 }
 
-int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
-                size_t errlen) {
+/* one blob of "state": rank 1, the type class it was written with */
+static int getblob(h5s *S, hid_t g, h5blob *b) {
+  hsize_t n = 0;
+  hid_t d, sp = -1, t = -1;
+  int rank = -1, r = -1;
+  H5T_class_t cl = H5T_NO_CLASS;
+  H5T_class_t want = b->type == H5B_F64 ? H5T_FLOAT : H5T_INTEGER;
+  size_t esz = b->type == H5B_U8 ? 1 : 8;
+  errno = 0;
+  if (H5Lexists(g, b->name, H5P_DEFAULT) <= 0)
+    return fail(S, "no dataset 'state/%s' (written by another version?)",
+                b->name);
+  d = H5Dopen2(g, b->name, H5P_DEFAULT);
+  if (d >= 0) sp = H5Dget_space(d);
+  if (sp >= 0) rank = H5Sget_simple_extent_ndims(sp);
+  if (rank == 1) H5Sget_simple_extent_dims(sp, &n, NULL);
+  if (d >= 0) t = H5Dget_type(d);
+  if (t >= 0) cl = H5Tget_class(t);
+  if (d < 0 || sp < 0 || t < 0) fail(S, "cannot open dataset 'state/%s'", b->name);
+  else if (rank != 1 || cl != want || n > SIZE_MAX / 8)
+    fail(S, "dataset 'state/%s' has the wrong shape or type", b->name);
+  else if (!(b->data = malloc(n ? (size_t)n * esz : 1)))
+    fail(S, "out of memory for dataset 'state/%s'", b->name);
+  else if (n > 0 && H5Dread(d, blobtype(b->type, 0), H5S_ALL, H5S_ALL,
+                            H5P_DEFAULT, b->data) < 0)
+    fail(S, "cannot read dataset 'state/%s'", b->name);
+  else {
+    b->n = (size_t)n;
+    r = 0;
+  }
+  if (t >= 0) H5Tclose(t);
+  if (sp >= 0) H5Sclose(sp);
+  if (d >= 0) H5Dclose(d);
+  return r;
+}
+
+static int getblobs(h5s *S, h5blob *b, int nb) {
+  hid_t g;
+  int k, r = 0;
+  if (nb == 0) return 0;
+  errno = 0;
+  if (H5Lexists(S->file, "state", H5P_DEFAULT) <= 0)
+    return fail(S, "no group 'state'");
+  g = H5Gopen2(S->file, "state", H5P_DEFAULT);
+  if (g < 0) return fail(S, "cannot open group 'state'");
+  for (k = 0; k < nb && r == 0; k++) r = getblob(S, g, &b[k]);
+  H5Gclose(g);
+  return r;
+}
+
+int out_h5_read_state(const char *path, const char *format, particles *ps,
+                      h5meta *meta, h5blob *b, int nb, char *err,
+                      size_t errlen) {
   h5s S;
   h5meta dummy;
-  int r;
+  const char *want = format ? format : FORMAT;
+  int r, k;
   if (!meta) meta = &dummy;
+  for (k = 0; k < nb; k++) b[k].data = NULL, b[k].n = 0;
   begin(&S, path, err, errlen);
   meta->units = meta->scene = meta->source = NULL;
   errno = 0;
@@ -677,12 +778,19 @@ int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
     r = fail(&S, "cannot read into a store that already holds particles");
   } else {
     S.file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (S.file < 0) r = fail(&S, "cannot open file");
-    else r = (getmeta(&S, meta) || getfields(&S, ps)) ? -1 : 0;
+    if (S.file < 0) r = fail(&S, "cannot open file (not HDF5, or damaged)");
+    else
+      r = (getmeta(&S, meta, want) || getfields(&S, ps) ||
+           getblobs(&S, b, nb)) ? -1 : 0;
   }
   end(&S);
   if (r != 0) ps->n = 0;
   return r;
+}
+
+int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
+                size_t errlen) {
+  return out_h5_read_state(path, NULL, ps, meta, NULL, 0, err, errlen);
 }
 
 /* }====================================================== */

@@ -43,6 +43,31 @@ typedef struct h5meta {
 int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
                  char *err, size_t errlen);
 
+/*
+** Checkpoints (ckpt.c) use the same file with other fields and more:
+** the fields whose flags meet `flags` (PF_RESTART), and 1-D datasets in
+** the group "/state", one per blob.  On reading, each blob named is
+** looked up, its type must match, and data is malloc'ed (the caller
+** frees it, also after a failure); a missing one is an error.
+*/
+enum { H5B_F64, H5B_I64, H5B_U8 };
+typedef struct h5blob {
+  const char *name;
+  int type;               /* H5B_F64 (double), H5B_I64 (int64_t), H5B_U8 */
+  size_t n;               /* entries */
+  void *data;
+} h5blob;
+/* format: the root's "format" attribute (NULL: "mvmpm-snapshot-1") */
+int out_h5_write_state(const char *path, const char *format,
+                       const particles *ps, unsigned flags,
+                       const h5meta *meta, const h5blob *b, int nb,
+                       char *err, size_t errlen);
+/* as out_h5_read, but the file's "format" must be format (NULL: a
+** snapshot), and the blobs are read too */
+int out_h5_read_state(const char *path, const char *format, particles *ps,
+                      h5meta *meta, h5blob *b, int nb, char *err,
+                      size_t errlen);
+
 /* Read a snapshot into an initialised, empty store: the built-in fields
 ** are filled, other datasets become run-time fields.  meta->time/step/cell
 ** are filled; string members are left NULL.  0 or -1 with err.

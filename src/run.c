@@ -12,6 +12,7 @@
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
+#include "ckpt.h"
 #include "interrupt.h"
 #include "lcheck.h"
 #include "lsim.h"
@@ -24,7 +25,7 @@ static double now(void) {
 }
 
 /* mkdir -p */
-static int mkdirs(const char *path, char *err, size_t errlen) {
+int run_mkdirs(const char *path, char *err, size_t errlen) {
   char buf[1024];
   size_t k, n = strlen(path);
   if (n >= sizeof buf) { snprintf(err, errlen, "%s: path too long", path); return -1; }
@@ -104,10 +105,41 @@ static void snapshot(lua_State *L, lsim *ls) {
     luaL_error(L, "%s", err);
 }
 
+long run_sync(lua_State *L, lsim *ls) {
+  char err[1100];
+  long n;
+  if (!ls->csv_open || !ls->csv.f) return -1;
+  n = out_csv_sync(&ls->csv, err, sizeof err);
+  if (n == -2) luaL_error(L, "%s", err);
+  return n;
+}
+
+/* a restarted run: the table continues where the checkpoint left it, the
+** index lists the snapshots up to then, the rest is already scheduled */
+static void out_resume(lua_State *L, lsim *ls) {
+  char err[1100], path[1100];
+  if (ls->csv_resume >= 0) {
+    snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
+    if (out_csv_resume(&ls->csv, path, ls->csv_resume, NCOLS, err, sizeof err))
+      luaL_error(L, "%s", err);
+  }
+  ls->csv_open = 1;
+  if (ls->nsnap > 0) {
+    snprintf(path, sizeof path, "%s/particles.xmf", ls->outdir);
+    if (out_xdmf_write(path, ls->snaps, ls->nsnap, &ls->s.ps, err, sizeof err))
+      luaL_error(L, "%s", err);
+  }
+}
+
 static void out_start(lua_State *L, lsim *ls) {
   char err[512], path[1100];
   if (!ls->out_enabled || !ls->outdir[0] || ls->csv_open) return;
-  if (mkdirs(ls->outdir, err, sizeof err)) luaL_error(L, "%s", err);
+  if (run_mkdirs(ls->outdir, err, sizeof err)) luaL_error(L, "%s", err);
+  if (ls->restarted) {
+    out_resume(L, ls);
+    return;
+  }
+  if (ls->ck_every > 0) ls->ck_next = ls->s.t + ls->ck_every;
   if (!ls->s.started) sim_begin(&ls->s); /* the first row is the start */
   if (ls->csv_every > 0) {
     snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
@@ -120,15 +152,6 @@ static void out_start(lua_State *L, lsim *ls) {
     snapshot(L, ls);
     ls->out_next = ls->s.t + ls->out_every;
   }
-}
-
-int run_close(lua_State *L, lsim *ls) {
-  char err[512];
-  if (ls->csv_open && ls->csv.f && out_csv_close(&ls->csv, err, sizeof err)) {
-    ls->csv_open = 0;
-    return luaL_error(L, "%s", err);
-  }
-  return 0;
 }
 
 /* drives and moving walls given as functions of time */
@@ -257,10 +280,20 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
       snapshot(L, ls);
       while (ls->out_next <= s->t + 1e-9 * ls->out_every) ls->out_next += ls->out_every;
     }
+    /* checkpoints do not change the steps: one is written at the first
+    ** step boundary at or after its time */
+    if (ls->csv_open && ls->ck_every > 0 && s->t >= ls->ck_next - 1e-9 * ls->ck_every) {
+      while (ls->ck_next <= s->t + 1e-9 * ls->ck_every) ls->ck_next += ls->ck_every;
+      ckpt_write(L, simidx);
+    }
     if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 0);
     if (interrupt_pending()) {
       interrupt_clear();
       if (show) progress(ls, t_end, t0, wall0, step0, 1);
+      if (ls->ck_on_interrupt && ls->csv_open) {
+        ckpt_write(L, simidx);
+        ls->interrupted = 1;
+      }
       luaL_error(L, "interrupted at step %d, t = %f", (int)s->step, s->t);
     }
   }

@@ -27,6 +27,15 @@ bash tests/repl/check.sh "./$bin" >"$log" 2>&1
 grep -E '^FAIL' "$log"
 tail -1 "$log"
 count "$log"
+# runs that fail: checkpoints and restarts, kills, full disks, Ctrl-C,
+# untrusted scenes
+for t in tests/fault/*.sh; do
+  [ "$(basename "$t")" = lib.sh ] && continue
+  bash "$t" "$bin" >"$log" 2>&1
+  grep -E '^(FAIL|skip)' "$log"
+  tail -1 "$log"
+  count "$log"
+done
 "./$bin" test tests/verify/*.lua 2>&1 | tee "$log"
 rc=${PIPESTATUS[0]}
 count "$log"

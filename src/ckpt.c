@@ -1,0 +1,666 @@
+/*
+** ckpt.c - checkpoints (the file is described in ckpt.h).
+**
+** One function, visit, walks every number of the state a step depends
+** on; writing gathers them into named lists, applying looks each name up
+** and assigns it back.  Both directions are the same code, so a number
+** cannot be saved and then forgotten on restart, and a checkpoint made
+** by a build or a scene with other state fails by name, not silently.
+*/
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "ckpt.h"
+#include "lauxlib.h"
+#include "lsim.h"
+#include "lstate.h"
+
+/* a list of named numbers, reals or integers */
+typedef struct vlist {
+  size_t n, cap, cur;
+  char **name;            /* gathering: owned; applying: into names */
+  double *r;
+  int64_t *i;
+  unsigned char *used;    /* applying: looked up */
+  char *names;            /* applying: the '\n'-separated names, split */
+} vlist;
+
+typedef struct ckv {
+  int apply;              /* 0: gather from the state, 1: assign to it */
+  vlist re, in;
+  char err[512];
+  int failed;
+} ckv;
+
+static int vfail(ckv *v, const char *fmt, ...) {
+  va_list ap;
+  if (v->failed) return -1;
+  v->failed = 1;
+  va_start(ap, fmt);
+  vsnprintf(v->err, sizeof v->err, fmt, ap);
+  va_end(ap);
+  return -1;
+}
+
+static void vlist_free(vlist *l, int owned) {
+  size_t k;
+  if (owned)
+    for (k = 0; k < l->n; k++) free(l->name[k]);
+  free(l->name);
+  free(l->r);
+  free(l->i);
+  free(l->used);
+  free(l->names);
+  memset(l, 0, sizeof *l);
+}
+
+static int vpush(ckv *v, vlist *l, const char *name, double r, int64_t i) {
+  if (l->n == l->cap) {
+    size_t cap = l->cap ? 2 * l->cap : 64;
+    char **nm = realloc(l->name, cap * sizeof *nm);
+    double *rr;
+    int64_t *ii;
+    if (nm) l->name = nm;
+    rr = nm ? realloc(l->r, cap * sizeof *rr) : NULL;
+    if (rr) l->r = rr;
+    ii = rr ? realloc(l->i, cap * sizeof *ii) : NULL;
+    if (ii) l->i = ii;
+    if (!ii) return vfail(v, "out of memory");
+    l->cap = cap;
+  }
+  if (!(l->name[l->n] = strdup(name))) return vfail(v, "out of memory");
+  l->r[l->n] = r;
+  l->i[l->n] = i;
+  l->n++;
+  return 0;
+}
+
+/* the index of name in l: the next one in order is the usual case */
+static long vfind(ckv *v, vlist *l, const char *name) {
+  size_t k = l->cur;
+  if (!(k < l->n && strcmp(l->name[k], name) == 0)) {
+    for (k = 0; k < l->n; k++)
+      if (strcmp(l->name[k], name) == 0) break;
+    if (k == l->n)
+      return vfail(v, "it has no value '%s' (written by another version of "
+                   "mvmpm, or for another scene)", name);
+  }
+  l->used[k] = 1;
+  l->cur = k + 1;
+  return (long)k;
+}
+
+static void vreal(ckv *v, const char *name, double *p) {
+  long k;
+  if (v->failed) return;
+  if (!v->apply) { vpush(v, &v->re, name, *p, 0); return; }
+  if ((k = vfind(v, &v->re, name)) >= 0) *p = v->re.r[k];
+}
+
+static void vint(ckv *v, const char *name, int64_t *p) {
+  long k;
+  if (v->failed) return;
+  if (!v->apply) { vpush(v, &v->in, name, 0, *p); return; }
+  if ((k = vfind(v, &v->in, name)) >= 0) *p = v->in.i[k];
+}
+
+#define VI(v, name, x, type)                      \
+  do {                                            \
+    int64_t t_ = (int64_t)(x);                    \
+    vint(v, name, &t_);                           \
+    (x) = (type)t_;                               \
+  } while (0)
+
+/* a count the scene fixes: the checkpoint must agree */
+static void vsame(ckv *v, const char *name, int64_t have, const char *what) {
+  int64_t t = have;
+  vint(v, name, &t);
+  if (!v->failed && t != have)
+    vfail(v, "it has %lld %s, the scene makes %lld", (long long)t, what,
+          (long long)have);
+}
+
+static void vvec(ckv *v, const char *pre, const char *name, double *x, int n) {
+  char nm[96];
+  int d;
+  for (d = 0; d < n; d++) {
+    snprintf(nm, sizeof nm, "%s%s.%c", pre, name, "xyz"[d]);
+    vreal(v, nm, &x[d]);
+  }
+}
+
+static const char *const side_names[] = {"left", "right", "bottom", "top",
+                                         "back", "front"};
+
+static void visit_sim(ckv *v, sim *s) {
+  sim_energy *e = &s->e;
+  char pre[64], nm[96];
+  int64_t nlaw;
+  int k;
+  vsame(v, "nmat", s->nmat, "materials");
+  vsame(v, "nbody", s->nbody, "bodies");
+  vsame(v, "nfield", s->nfield, "velocity fields");
+  vsame(v, "dim", DIM, "dimensions");
+  vsame(v, "transfer", s->transfer, "as its transfer (0 FLIP, 1 APIC)");
+  VI(v, "step", s->step, long);
+  VI(v, "started", s->started, int);
+  vreal(v, "t", &s->t);
+  vreal(v, "dt", &s->dt);
+  vreal(v, "t_end", &s->t_end);
+  vreal(v, "t_stop", &s->t_stop);
+  vreal(v, "flip", &s->flip);
+  vreal(v, "cfl", &s->cfl);
+  vreal(v, "dt_fixed", &s->dt_fixed);
+  vreal(v, "mu_default", &s->mu_default);
+  vreal(v, "bond_default", &s->bond_default);
+  VI(v, "gap_check", s->gap_check, int);
+  VI(v, "sort_every", s->sort_every, int);
+  vreal(v, "mcut", &s->mcut);
+  vreal(v, "mcut_rel", &s->mcut_rel);
+  vreal(v, "vmax", &s->vmax);
+  VI(v, "nout", s->nout, size_t);
+  VI(v, "nremoved", s->nremoved, size_t);
+  VI(v, "ncut", s->ncut, size_t);
+  VI(v, "ncut_total", s->ncut_total, size_t);
+  vreal(v, "bond_area", &s->bond_area);
+  VI(v, "temp_on", s->temp_on, int);
+  vreal(v, "temp", &s->temp);
+  VI(v, "nmade", s->ps.nmade, size_t);
+  vvec(v, "", "gravity", s->gravity, DIM);
+  vreal(v, "e.kinetic", &e->kinetic);
+  vreal(v, "e.strain", &e->strain);
+  vreal(v, "e.potential", &e->potential);
+  vreal(v, "e.lag", &e->lag);
+  vreal(v, "e.friction", &e->friction);
+  vreal(v, "e.boundary", &e->boundary);
+  vreal(v, "e.plastic", &e->plastic);
+  vreal(v, "e.viscous", &e->viscous);
+  vreal(v, "e.thermal", &e->thermal);
+  vreal(v, "e.initial", &e->initial);
+  vvec(v, "e.", "mom", e->mom, DIM);
+  vreal(v, "e.angmom", &e->angmom);
+  vreal(v, "e.jmin", &e->jmin);
+  vreal(v, "e.jmax", &e->jmax);
+  VI(v, "e.nbadj", e->nbadj, size_t);
+  for (k = 0; k < NSIDES; k++) {
+    side *sd = &s->sides[k];
+    snprintf(pre, sizeof pre, "side.%s.", side_names[k]);
+    snprintf(nm, sizeof nm, "%skind", pre);
+    vsame(v, nm, sd->kind, "as its kind (0 free, 1 wall, 2 periodic)");
+    snprintf(nm, sizeof nm, "%smu", pre);
+    vreal(v, nm, &sd->mu);
+    vvec(v, pre, "v", sd->v, DIM);
+    vvec(v, pre, "force", sd->force, DIM);
+  }
+  for (k = 0; k < s->nbody && !v->failed; k++) {
+    body *b = &s->bodies[k];
+    snprintf(pre, sizeof pre, "body%d.", k + 1);
+    snprintf(nm, sizeof nm, "%sdriven", pre);
+    vsame(v, nm, b->driven, "as its drive flag");
+    vvec(v, pre, "vdrive", b->vdrive, DIM);
+    vvec(v, pre, "force", b->force, DIM);
+  }
+  /* contact laws: a callback may add or change them */
+  nlaw = s->nlaw;
+  vint(v, "nlaw", &nlaw);
+  if (v->apply && !v->failed) {
+    if (nlaw < 0 || nlaw > 1000000) { vfail(v, "it has %lld contact laws", (long long)nlaw); return; }
+    s->nlaw = 0;
+    memset(s->flaw, 0, (size_t)s->nfield);
+  }
+  for (k = 0; k < nlaw && !v->failed; k++) {
+    pairlaw l = {0, 0, 0, 0};
+    int64_t a, b;
+    if (!v->apply) l = s->laws[k];
+    a = l.a;
+    b = l.b;
+    snprintf(pre, sizeof pre, "law%d.", k + 1);
+    snprintf(nm, sizeof nm, "%sa", pre); vint(v, nm, &a);
+    snprintf(nm, sizeof nm, "%sb", pre); vint(v, nm, &b);
+    snprintf(nm, sizeof nm, "%smu", pre); vreal(v, nm, &l.mu);
+    snprintf(nm, sizeof nm, "%sbond", pre); vreal(v, nm, &l.bond);
+    if (v->apply && !v->failed) {
+      if (a < 0 || b < 0 || a >= s->nfield || b >= s->nfield || a == b)
+        vfail(v, "its contact law %d names fields %lld and %lld", k + 1,
+              (long long)a, (long long)b);
+      else if (sim_set_law(s, (int32_t)a, (int32_t)b, l.mu, l.bond))
+        vfail(v, "out of memory");
+    }
+  }
+}
+
+/* the run's side: output and checkpoint schedule, callbacks' next times */
+static void visit_run(ckv *v, lua_State *L, int simidx, lsim *ls,
+                      int64_t csv_bytes) {
+  lua_Integer k, n;
+  char nm[64];
+  vreal(v, "run.out_every", &ls->out_every);
+  vreal(v, "run.out_next", &ls->out_next);
+  VI(v, "run.csv_every", ls->csv_every, long);
+  VI(v, "run.nsnap", ls->nsnap, int);
+  vreal(v, "run.ck_every", &ls->ck_every);
+  vreal(v, "run.ck_next", &ls->ck_next);
+  VI(v, "run.ck_count", ls->ck_count, int);
+  vint(v, "run.csv_bytes", &csv_bytes);
+  if (v->apply) ls->csv_resume = (long)csv_bytes;
+  lsim_uv(L, simidx, "every");
+  n = (lua_Integer)lua_rawlen(L, -1);
+  vsame(v, "run.nevery", n, "sim:every callbacks");
+  for (k = 1; k <= n && !v->failed; k++) {
+    int bytime;
+    lua_rawgeti(L, -1, k);
+    bytime = lua_getfield(L, -1, "time") != LUA_TNIL;
+    lua_pop(L, 1);
+    snprintf(nm, sizeof nm, "every%d.bytime", (int)k);
+    vsame(v, nm, bytime, "as its kind (1 time, 0 steps)");
+    snprintf(nm, sizeof nm, "every%d.next", (int)k);
+    lua_getfield(L, -1, "next");
+    if (bytime) {
+      double x = lua_tonumber(L, -1);
+      vreal(v, nm, &x);
+      lua_pushnumber(L, x);
+    } else {
+      int64_t x = (int64_t)lua_tointeger(L, -1);
+      vint(v, nm, &x);
+      lua_pushinteger(L, (lua_Integer)x);
+    }
+    lua_setfield(L, -3, "next");
+    lua_pop(L, 2);
+  }
+  lua_pop(L, 1);
+}
+
+/*
+** {======================================================
+** Writing
+** =======================================================
+*/
+
+/* a growing string */
+typedef struct sbuf { char *b; size_t n, cap; int bad; } sbuf;
+
+static void sadd(sbuf *s, const char *p, size_t n) {
+  if (s->bad) return;
+  if (s->n + n + 1 > s->cap) {
+    size_t cap = s->cap ? 2 * s->cap : 256;
+    char *q;
+    while (cap < s->n + n + 1) cap *= 2;
+    if (!(q = realloc(s->b, cap))) { s->bad = 1; return; }
+    s->b = q;
+    s->cap = cap;
+  }
+  memcpy(s->b + s->n, p, n);
+  s->n += n;
+  s->b[s->n] = '\0';
+}
+
+static void names(sbuf *s, const vlist *l) {
+  size_t k;
+  for (k = 0; k < l->n; k++) {
+    sadd(s, l->name[k], strlen(l->name[k]));
+    sadd(s, "\n", 1);
+  }
+}
+
+static int strcmpp(const void *a, const void *b) {
+  return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+/* the overrides in force, "name=value" lines in name order */
+static void params(lua_State *L, sbuf *s);
+
+char *ckpt_overrides(lua_State *L) {
+  sbuf s = {0};
+  params(L, &s);
+  if (s.bad) { free(s.b); return NULL; }
+  if (!s.b) return calloc(1, 1);
+  return s.b;
+}
+
+static void params(lua_State *L, sbuf *s) {
+  char *line[256];
+  int n = 0, k;
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides");
+  if (lua_istable(L, -1)) {
+    lua_pushnil(L);
+    while (lua_next(L, -2)) {
+      if (lua_type(L, -2) == LUA_TSTRING) {
+        size_t kl, vl;
+        const char *key = lua_tolstring(L, -2, &kl);
+        const char *val = luaL_tolstring(L, -1, &vl);
+        if (n == 256 || !(line[n] = malloc(kl + vl + 3))) s->bad = 1;
+        else snprintf(line[n++], kl + vl + 3, "%s=%s\n", key, val);
+        lua_pop(L, 1);
+      }
+      lua_pop(L, 1);
+    }
+  }
+  lua_pop(L, 1);
+  qsort(line, (size_t)n, sizeof *line, strcmpp);
+  for (k = 0; k < n; k++) {
+    sadd(s, line[k], strlen(line[k]));
+    free(line[k]);
+  }
+}
+
+static int syncdir(const char *dir) {
+  int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC), r;
+  if (fd < 0) return -1;
+  r = fsync(fd);
+  close(fd);
+  return r;
+}
+
+static void ckname(char *buf, size_t len, const char *dir, int k) {
+  snprintf(buf, len, "%s/checkpoint_%06d.h5", dir, k);
+}
+
+void ckpt_write(lua_State *L, int simidx) {
+  lsim *ls = lsim_check(L, simidx);
+  sim *s = &ls->s;
+  ckv v;
+  sbuf rn = {0}, in = {0}, fl = {0}, sf = {0}, pa = {0};
+  double *st = NULL;
+  int64_t *sn = NULL;
+  h5blob b[CB_N];
+  h5meta meta;
+  char path[1100], old[1100], err[1024];
+  const char *scene, *source, *state = NULL;
+  size_t statelen = 0;
+  int k, r, top = lua_gettop(L);
+  long csv = run_sync(L, ls);
+  simidx = lua_absindex(L, simidx);
+  /* first what may raise an error (a function in the state), before
+  ** anything is allocated */
+  lsim_uv(L, simidx, "state");
+  if (lua_istable(L, -1)) {
+    lstate_save(L, -1);
+    state = lua_tolstring(L, -1, &statelen);
+  }
+  memset(&v, 0, sizeof v);
+  ls->ck_count++; /* what a restart continues from */
+  visit_sim(&v, s);
+  visit_run(&v, L, simidx, ls, csv);
+  names(&rn, &v.re);
+  names(&in, &v.in);
+  for (k = 0; k < s->ps.nfields; k++)
+    if (s->ps.fields[k].flags & PF_RESTART) {
+      sadd(&fl, s->ps.fields[k].name, strlen(s->ps.fields[k].name));
+      sadd(&fl, "\n", 1);
+    }
+  st = malloc((ls->nsnap + 1) * sizeof *st);
+  sn = malloc((ls->nsnap + 1) * sizeof *sn);
+  for (k = 0; st && sn && k < ls->nsnap; k++) {
+    st[k] = ls->snaps[k].time;
+    sn[k] = (int64_t)ls->snaps[k].n;
+    sadd(&sf, ls->snaps[k].file, strlen(ls->snaps[k].file));
+    sadd(&sf, "\n", 1);
+  }
+  params(L, &pa);
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.scene");
+  scene = lua_isstring(L, -1) ? lua_tostring(L, -1) : ls->scene;
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
+  source = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+  if (v.failed || rn.bad || in.bad || fl.bad || sf.bad || pa.bad || !st || !sn) {
+    snprintf(err, sizeof err, "checkpoint: %s", v.failed ? v.err : "out of memory");
+    r = -1;
+  } else {
+    b[CB_REALN] = (h5blob){"real_names", H5B_U8, rn.n, rn.b};
+    b[CB_REAL] = (h5blob){"real", H5B_F64, v.re.n, v.re.r};
+    b[CB_INTN] = (h5blob){"int_names", H5B_U8, in.n, in.b};
+    b[CB_INT] = (h5blob){"int", H5B_I64, v.in.n, v.in.i};
+    b[CB_SNAPF] = (h5blob){"snap_files", H5B_U8, sf.n, sf.b};
+    b[CB_SNAPT] = (h5blob){"snap_time", H5B_F64, (size_t)ls->nsnap, st};
+    b[CB_SNAPN] = (h5blob){"snap_n", H5B_I64, (size_t)ls->nsnap, sn};
+    b[CB_PARAMS] = (h5blob){"params", H5B_U8, pa.n, pa.b};
+    b[CB_SCENE] = (h5blob){"scene", H5B_U8, strlen(scene), (void *)scene};
+    b[CB_SOURCE] = (h5blob){"source", H5B_U8, strlen(source), (void *)source};
+    b[CB_STATE] = (h5blob){"lua_state", H5B_U8, statelen, (void *)state};
+    b[CB_FIELDS] = (h5blob){"fields", H5B_U8, fl.n, fl.b};
+    memset(&meta, 0, sizeof meta);
+    meta.time = s->t;
+    meta.step = s->step;
+    meta.cell = s->g.h;
+    meta.units = ls->units;
+    meta.scene = scene;
+    ckname(path, sizeof path, ls->outdir, ls->ck_count);
+    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta, b, CB_N, err,
+                           sizeof err);
+    if (r == 0 && syncdir(ls->outdir)) {
+      snprintf(err, sizeof err, "%s: cannot sync the directory (%s)",
+               ls->outdir, strerror(errno));
+      r = -1;
+    }
+  }
+  vlist_free(&v.re, 1);
+  vlist_free(&v.in, 1);
+  free(rn.b); free(in.b); free(fl.b); free(sf.b); free(pa.b);
+  free(st); free(sn);
+  lua_settop(L, top);
+  if (r) {
+    ls->ck_count--;
+    luaL_error(L, "%s", err);
+  }
+  snprintf(ls->ck_last, sizeof ls->ck_last, "%s", path);
+  /* keep the newest two: the older of them is the fallback if the newest
+  ** turns out unreadable */
+  if (ls->ck_count > 2) {
+    ckname(old, sizeof old, ls->outdir, ls->ck_count - 2);
+    remove(old);
+  }
+}
+
+/* }====================================================== */
+
+
+/*
+** {======================================================
+** Reading and applying
+** =======================================================
+*/
+
+static const char *const blobnames[CB_N] = {"real_names", "real",
+    "int_names", "int", "snap_files", "snap_time", "snap_n", "params",
+    "scene", "source", "lua_state", "fields"};
+static const int blobtypes[CB_N] = {H5B_U8, H5B_F64, H5B_U8, H5B_I64, H5B_U8,
+    H5B_F64, H5B_I64, H5B_U8, H5B_U8, H5B_U8, H5B_U8, H5B_U8};
+
+int ckpt_read(ckpt *c, const char *path, char *err, size_t errlen) {
+  int k;
+  memset(c, 0, sizeof *c);
+  snprintf(c->path, sizeof c->path, "%s", path);
+  particles_init(&c->ps);
+  for (k = 0; k < CB_N; k++) {
+    c->b[k].name = blobnames[k];
+    c->b[k].type = blobtypes[k];
+  }
+  return out_h5_read_state(path, CKPT_FORMAT, &c->ps, &c->meta, c->b, CB_N,
+                           err, errlen);
+}
+
+void ckpt_free(ckpt *c) {
+  int k;
+  particles_free(&c->ps);
+  for (k = 0; k < CB_N; k++) free(c->b[k].data);
+  memset(c, 0, sizeof *c);
+}
+
+char *ckpt_string(const ckpt *c, int which) {
+  char *s = malloc(c->b[which].n + 1);
+  if (!s) return NULL;
+  if (c->b[which].n) memcpy(s, c->b[which].data, c->b[which].n);
+  s[c->b[which].n] = '\0';
+  return s;
+}
+
+/* split '\n'-terminated names into a list for lookup */
+static int vload(ckv *v, vlist *l, const ckpt *c, int nb, int vb, int isint) {
+  size_t k = 0, cnt = c->b[vb].n;
+  char *p, *q;
+  l->names = ckpt_string(c, nb);
+  l->name = calloc(cnt + 1, sizeof *l->name);
+  l->used = calloc(cnt + 1, 1);
+  if (!l->names || !l->name || !l->used) return vfail(v, "out of memory");
+  for (p = l->names; *p && k < cnt; p = q + 1) {
+    if (!(q = strchr(p, '\n'))) break;
+    *q = '\0';
+    l->name[k++] = p;
+  }
+  if (k != cnt) return vfail(v, "its lists of names and values differ in length");
+  l->n = cnt;
+  if (isint) l->i = malloc(cnt * 8 + 8);
+  else l->r = malloc(cnt * 8 + 8);
+  if (!l->i && !l->r) return vfail(v, "out of memory");
+  memcpy(isint ? (void *)l->i : (void *)l->r, c->b[vb].data, cnt * 8);
+  return 0;
+}
+
+/* every saved value must have been asked for */
+static void vleft(ckv *v, const vlist *l) {
+  size_t k;
+  for (k = 0; k < l->n && !v->failed; k++)
+    if (!l->used[k])
+      vfail(v, "it has a value '%s' this scene does not make", l->name[k]);
+}
+
+/* the particle fields a checkpoint of this scene holds, in order */
+static int fields_match(ckv *v, const sim *s, const ckpt *c) {
+  sbuf fl = {0};
+  int k, r = 0;
+  for (k = 0; k < s->ps.nfields; k++)
+    if (s->ps.fields[k].flags & PF_RESTART) {
+      const pfield *f = &s->ps.fields[k];
+      int j = particles_find(&c->ps, f->name);
+      sadd(&fl, f->name, strlen(f->name));
+      sadd(&fl, "\n", 1);
+      if (j < 0 || c->ps.fields[j].type != f->type ||
+          c->ps.fields[j].ncomp != f->ncomp)
+        r = vfail(v, "its particle field '%s' is missing or of another "
+                  "shape", f->name);
+    }
+  if (!r && (fl.bad || fl.n != c->b[CB_FIELDS].n ||
+             memcmp(fl.b, c->b[CB_FIELDS].data, fl.n) != 0))
+    r = vfail(v, "it holds other particle fields than this scene makes "
+              "(scene: %s; checkpoint: %.*s)", fl.b ? fl.b : "",
+              (int)c->b[CB_FIELDS].n, (const char *)c->b[CB_FIELDS].data);
+  free(fl.b);
+  return r;
+}
+
+static int copy_particles(ckv *v, sim *s, const ckpt *c) {
+  particles *ps = &s->ps;
+  size_t n = c->ps.n;
+  int k, comp;
+  if (particles_reserve(ps, n ? n : 1)) return vfail(v, "out of memory");
+  for (k = 0; k < ps->nfields; k++) {
+    const pfield *f = &ps->fields[k];
+    int j = particles_find(&c->ps, f->name);
+    size_t esz = f->type == PF_INT32 ? 4 : 8;
+    if (!(f->flags & PF_RESTART)) continue;
+    for (comp = 0; comp < f->ncomp; comp++)
+      memcpy(particles_comp(ps, k, comp), particles_comp(&c->ps, j, comp),
+             n * esz);
+  }
+  ps->n = n;
+  return 0;
+}
+
+static int copy_snaps(ckv *v, lsim *ls, const ckpt *c) {
+  char *files = ckpt_string(c, CB_SNAPF), *p, *q;
+  int k = 0, n = ls->nsnap;
+  if (n < 0 || (size_t)n != c->b[CB_SNAPT].n || (size_t)n != c->b[CB_SNAPN].n) {
+    free(files);
+    return vfail(v, "its XDMF entries are inconsistent");
+  }
+  if (n > ls->snapcap) {
+    xdmf_entry *e = realloc(ls->snaps, (size_t)n * sizeof *e);
+    if (!e) { free(files); return vfail(v, "out of memory"); }
+    ls->snaps = e;
+    ls->snapcap = n;
+  }
+  for (p = files; p && k < n; p = q + 1, k++) {
+    if (!(q = strchr(p, '\n'))) break;
+    *q = '\0';
+    snprintf(ls->snaps[k].file, sizeof ls->snaps[k].file, "%s", p);
+    ls->snaps[k].time = ((const double *)c->b[CB_SNAPT].data)[k];
+    ls->snaps[k].n = (size_t)((const int64_t *)c->b[CB_SNAPN].data)[k];
+  }
+  free(files);
+  return k == n ? 0 : vfail(v, "its XDMF entries are inconsistent");
+}
+
+int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
+               size_t errlen) {
+  lsim *ls = lsim_check(L, simidx);
+  sim *s = &ls->s;
+  ckv v;
+  int top = lua_gettop(L);
+  simidx = lua_absindex(L, simidx);
+  memset(&v, 0, sizeof v);
+  v.apply = 1;
+  if (vload(&v, &v.re, c, CB_REALN, CB_REAL, 0) == 0 &&
+      vload(&v, &v.in, c, CB_INTN, CB_INT, 1) == 0 &&
+      fields_match(&v, s, c) == 0) {
+    visit_sim(&v, s);
+    visit_run(&v, L, simidx, ls, -1);
+    vleft(&v, &v.re);
+    vleft(&v, &v.in);
+  }
+  if (!v.failed) copy_particles(&v, s, c);
+  if (!v.failed) copy_snaps(&v, ls, c);
+  if (!v.failed) {
+    lsim_uv(L, simidx, "state");
+    if (c->b[CB_STATE].n > 0 && !lua_istable(L, -1))
+      vfail(&v, "it holds a sim:state table but the scene registers none");
+    else if (c->b[CB_STATE].n == 0 && lua_istable(L, -1))
+      vfail(&v, "the scene registers a sim:state table but the checkpoint "
+            "holds none");
+    else if (c->b[CB_STATE].n > 0 &&
+             lstate_load(L, -1, c->b[CB_STATE].data, c->b[CB_STATE].n, v.err,
+                         sizeof v.err))
+      v.failed = 1;
+  }
+  lua_settop(L, top);
+  vlist_free(&v.re, 0);
+  vlist_free(&v.in, 0);
+  if (v.failed) {
+    snprintf(err, errlen, "%s: cannot continue this scene from it: %s",
+             c->path, v.err);
+    return -1;
+  }
+  ls->restarted = 1;
+  return 0;
+}
+
+int ckpt_latest(const char *dir, char *out, size_t len, char *err,
+                size_t errlen) {
+  DIR *d = opendir(dir);
+  struct dirent *de;
+  int best = -1;
+  if (!d) {
+    snprintf(err, errlen, "%s: cannot open directory (%s)", dir, strerror(errno));
+    return -1;
+  }
+  while ((de = readdir(d))) {
+    int k, used = 0;
+    if (strlen(de->d_name) == 20 &&
+        sscanf(de->d_name, "checkpoint_%6d.h5%n", &k, &used) == 1 &&
+        used == 20 && k > best)
+      best = k;
+  }
+  closedir(d);
+  if (best < 0) {
+    snprintf(err, errlen, "%s: no checkpoint_NNNNNN.h5 in this directory", dir);
+    return -1;
+  }
+  ckname(out, len, dir, best);
+  return 0;
+}
+
+/* }====================================================== */

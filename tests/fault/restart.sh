@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# tests/fault/restart.sh BIN - a run continued from a checkpoint is the
+# uninterrupted run, bit for bit: every particle field at t_end (hex
+# floats, written by the scene), the sim:state series, the diagnostics
+# table, the XDMF index and the snapshots written after the checkpoint.
+# Also: what a restart refuses (other --set values, a changed scene, a
+# snapshot given as a checkpoint, a damaged file).
+source "$(dirname "$0")/lib.sh" restart "$1"
+scene=$PWD/tests/fault/pieces.lua
+cd "$tmp"
+
+"$bin" run "$scene" --out full --set dump=true --checkpoint-every 0.15 --quiet
+ok $? "uninterrupted run with checkpoints"
+n=$(ls full/checkpoint_*.h5 | wc -l)
+[ "$n" -eq 2 ]; ok $? "the newest two checkpoints are kept" "$n files: $(cd full; echo checkpoint_*.h5)"
+
+# the second piece: the run's directory as it stood at checkpoint 3
+# (t ~ 0.45), with what came later taken away
+cp -r full piece
+rm piece/fields.txt piece/particles_000005.h5 piece/particles_000006.h5 piece/checkpoint_000004.h5
+cp piece/diagnostics.csv piece/diagnostics.csv.part && rm piece/diagnostics.csv
+"$bin" run --restart piece/checkpoint_000003.h5 --quiet
+ok $? "restart from checkpoint 3"
+cmp -s full/fields.txt piece/fields.txt
+ok $? "every particle field at t_end and the sim:state sums are bit for bit the same" \
+   "$(grep -c . full/fields.txt) lines compared"
+cmp -s full/diagnostics.csv piece/diagnostics.csv
+ok $? "diagnostics.csv is the same, rows cut and appended" "$(wc -l <full/diagnostics.csv) rows"
+cmp -s full/particles.xmf piece/particles.xmf
+ok $? "particles.xmf is the same"
+for k in 5 6; do
+  h5diff full/particles_00000$k.h5 piece/particles_00000$k.h5 >/dev/null 2>&1
+  ok $? "snapshot $k written after the restart has the same data (h5diff)"
+done
+[ ! -e piece/diagnostics.csv.part ]; ok $? "the finished table is renamed into place"
+
+# a finished run continued again from its directory's newest checkpoint
+"$bin" run --restart piece --quiet >/dev/null 2>&1
+ok $? "--restart DIR takes the newest checkpoint"
+
+# refusals
+"$bin" run --restart full/checkpoint_000003.h5 --set cell=0.05 >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "the run was made with other parameters"
+ok $? "other --set values are refused" "$(head -1 out.txt)"
+"$bin" run --restart full/checkpoint_000003.h5 --set dump=true --quiet >out.txt 2>&1
+ok $? "the same --set values are accepted"
+sed 's/radius = 0.3}, material = rubber/radius = 0.29}, material = rubber/' "$scene" >changed.lua
+"$bin" run --restart full/checkpoint_000003.h5 changed.lua >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "a changed scene cannot continue the run"
+ok $? "a changed scene is refused" "$(head -1 out.txt)"
+"$bin" run --restart full/particles_000002.h5 >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "not an mvmpm checkpoint"
+ok $? "a snapshot is not a checkpoint" "$(head -1 out.txt)"
+head -c 3000 full/checkpoint_000003.h5 >full/checkpoint_000009.h5
+"$bin" run --restart full/checkpoint_000009.h5 >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "checkpoint_000009.h5: cannot open file"
+ok $? "a truncated checkpoint names the file and the reason" "$(head -1 out.txt)"
+echo "not hdf5" >junk.h5
+"$bin" run --restart junk.h5 >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "junk.h5: cannot open file"
+ok $? "a file that is not HDF5 is refused" "$(head -1 out.txt)"
+"$bin" run --restart full/checkpoint_000003.h5 --out elsewhere >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "--out cannot be given with --restart"
+ok $? "--out with --restart is refused"
+mkdir empty
+"$bin" run --restart empty >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "no checkpoint_NNNNNN.h5"
+ok $? "a directory without checkpoints is refused"
+# a state that cannot be saved is named when the checkpoint is due
+cat >badstate.lua <<'LUA'
+local mvmpm = require "mvmpm"
+local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1/8, t_end = 0.05}
+sim:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2},
+          material = mvmpm.elastic {K = 1, G = 0.5, density = 1}}
+sim:state {a = {1, 2, {fn = print}}}
+return sim
+LUA
+"$bin" run badstate.lua --out bs --checkpoint-every 0.01 --quiet >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "state.a[3].fn is a function"
+ok $? "a function in sim:state is refused by its place" "$(head -1 out.txt)"
+finish

@@ -268,7 +268,8 @@ int lbody_new(lua_State *L) {
   size_t *taken = NULL, ntaken = 0, k;
   double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond, T0;
   size_t first;
-  int mi, b, d, exact, skip, isrest = 0, vfun;
+  int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0;
+  double blo[DIM], bhi[DIM];
   int32_t field;
   char name[32];
   luaL_checktype(L, 2, LUA_TTABLE);
@@ -309,6 +310,12 @@ int lbody_new(lua_State *L) {
                     "rect, polygon, annulus, region or rest)", name);
     sh = lshape_check(L, -1);
     isrest = sh->kind == SH_REST;
+    for (d = 0; d < DIM; d++) {
+      blo[d] = sh->lo[d];
+      bhi[d] = sh->hi[d];
+      if (!s->g.periodic[d] && (sh->hi[d] <= s->g.lo[d] || sh->lo[d] >= s->g.hi[d]))
+        outside = 1;
+    }
     lua_insert(L, -2);  /* name on top for messages */
     seed_shape(L, ls, lua_gettop(L) - 1, skip || isrest, s->nbody, &sd, &taken,
                &ntaken);
@@ -326,8 +333,12 @@ int lbody_new(lua_State *L) {
   }
   if (sd.n == 0) {
     free(sd.x); free(sd.vol); free(taken);
-    luaL_error(L, "body '%s': no particle falls inside its shape (is it inside "
-                  "the domain and at least one seeding point across?)", name);
+    if (outside)
+      chk_error(L, "body '%s': its shape (x %g .. %g, y %g .. %g) lies outside "
+                   "the domain (x %g .. %g, y %g .. %g)", name, blo[0], bhi[0],
+                blo[1], bhi[1], s->g.lo[0], s->g.hi[0], s->g.lo[1], s->g.hi[1]);
+    luaL_error(L, "body '%s': no particle falls inside its shape (is it at least "
+                  "one seeding point, a cell / ppc, across?)", name);
   }
   lua_getfield(L, 2, "driven");
   field = fieldof(L, 1, ls, !lua_isnil(L, -1));

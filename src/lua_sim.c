@@ -166,7 +166,7 @@ int lsim_new(lua_State *L) {
   bytes = grid_bytes(lo, hi, h, shape_pad(shape)) +
           nodes * pow(ppc, DIM) * (8.0 * (2 * DIM + 2 + 2 * NTENS + NSTRESS + 2) + 16);
   if (bytes > 16e9)
-    chk_error(L, "sim: %.3g cells would need about %.1f GB (limit 16 GB); "
+    chk_error(L, "sim: %.3g cells would need about %.3g GB (limit 16 GB); "
                   "use a coarser 'cell' or a smaller domain", nodes, bytes / 1e9);
   /* sides */
   lua_getfield(L, 1, "sides");

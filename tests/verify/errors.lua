@@ -1,0 +1,73 @@
+-- Bad input gets a clear error: for each rule a small scene breaks it,
+-- and the message must name the scene file and line, the field, and the
+-- allowed range (or what is allowed).  Each scene is written to a
+-- temporary file and loaded as a user's would be.
+local mvmpm = require "mvmpm"
+local V = require "mvmpm.verify"
+
+local path = os.tmpname() .. ".lua"
+local name = path:match("[^/]+$")
+local head = 'local mvmpm = require "mvmpm"\n'
+local sim0 = 'local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1}\n'
+local el = 'mvmpm.elastic {K = 1, G = 1, density = 1}'
+
+-- rule: {what, scene text, line of the fault, patterns the message holds}
+local rules = {
+  {"cell size must be positive", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = -0.1}',
+    2, {"'cell'", "> 0", "got %-0.1"}},
+  {"cfl in (0, 1]", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, cfl = 2}',
+    2, {"'cfl'", "%(0, 1%]", "got 2"}},
+  {"unknown key, with the nearest name", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cel = 0.1}',
+    2, {"unknown field 'cel'", "did you mean 'cell'"}},
+  {"a grid too large for memory, refused before allocating",
+    'return mvmpm.sim {domain = {x = {0, 1e6}, y = {0, 1e6}}, cell = 1e-3}',
+    2, {"cells would need", "GB", "limit 16 GB"}},
+  {"domain extent a whole number of cells", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.3}',
+    2, {"whole number of cells", "0.3", "3.33"}},
+  {"domain max > min", 'return mvmpm.sim {domain = {x = {1, 0}, y = {0, 1}}, cell = 0.1}',
+    2, {"sim.domain", "x = {1, 0}", "max > min"}},
+  {"particles per cell in [1, 8]", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, ppc = 9}',
+    2, {"'ppc'", "%[1, 8%]", "got 9"}},
+  {"shape one of the kinds", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, shape = "cubic"}',
+    2, {"'shape'", "linear, gimp, bspline2", "'cubic'"}},
+  {"periodic sides in pairs", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {left = "periodic"}}',
+    2, {"sides.left", "sides.right", "both be periodic"}},
+  {"Poisson's ratio in (-1, 0.5)", 'local m = mvmpm.elastic {E = 1, nu = 0.5, density = 1}',
+    2, {"'nu'", "%(%-1, 0.5%)", "got 0.5"}},
+  {"density > 0", 'local m = mvmpm.elastic {E = 1, nu = 0.3, density = 0}',
+    2, {"'density'", "> 0", "got 0"}},
+  {"yield stress > 0", 'local m = mvmpm.plastic {K = 1, G = 1, density = 1, yield = -1}',
+    2, {"'yield'", "> 0", "got %-1"}},
+  {"relaxation times > 0", 'local m = mvmpm.viscoelastic {K = 1, density = 1, prony = {{G = 1, tau = 0}}}',
+    2, {"prony%[1%]", "'tau'", "> 0"}},
+  {"a body outside the domain", sim0 .. 's:body {shape = mvmpm.disk {center = {5, 5}, radius = 0.2}, material = ' .. el .. '}',
+    3, {"lies outside the domain", "x 4.8 .. 5.2", "x 0 .. 1"}},
+  {"overlapping bodies", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. '}\n' ..
+    's:body {shape = mvmpm.disk {center = {0.6, 0.5}, radius = 0.2}, material = ' .. el .. '}',
+    4, {"overlaps body", "overlap = \"skip\""}},
+  {"a misspelt body key", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, materal = 1}',
+    3, {"unknown field 'materal'", "did you mean 'material'"}},
+  {"a wall's velocity along its normal", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {left = {"wall", velocity = {1, 0}}}}',
+    2, {"sides.left", "velocity's x component must be 0"}},
+  {"friction only on walls", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {"free", friction = 0.3}}',
+    2, {"only a wall has friction"}},
+  {"friction >= 0", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, contact = {friction = -1}}',
+    2, {"'friction'", ">= 0", "got %-1"}},
+  {"bond strength >= 0", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. ', bond = -1}',
+    3, {"'bond'", ">= 0", "got %-1"}},
+  {"APIC needs GIMP or B-splines", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, transfer = "apic"}',
+    2, {"transfer = \"apic\"", "gimp", "bspline2"}},
+}
+
+V.case "each rule names the file, the line, the field and what is allowed"
+for _, r in ipairs(rules) do
+  local f = assert(io.open(path, "w"))
+  f:write(head .. r[2] .. "\n")
+  f:close()
+  local ok, err = pcall(mvmpm.load, path)
+  err = tostring(err):match("^[^\n]*")
+  local good = not ok and err:find(name .. ":" .. r[3] .. ":", 1, true) ~= nil
+  for _, p in ipairs(r[4]) do good = good and err:find(p) ~= nil end
+  V.holds(r[1], good, 0, err)
+end
+os.remove(path)

@@ -15,7 +15,13 @@ PKGS   = lua5.4 hdf5 libedit zlib
 CC    ?= cc
 WARN   = -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter -Wno-format-truncation
 OPT    = -O3 -march=native
-ifeq ($(SAN),1)
+ifeq ($(FUZZ),1)
+CC     = clang
+WARN   = -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
+BUILD  = build-fuzz
+OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined
+BIN    = $(BUILD)/mvmpm
+else ifeq ($(SAN),1)
 BUILD  = build-san
 OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
 BIN    = $(BUILD)/mvmpm
@@ -65,7 +71,20 @@ pbx-scale: $(BIN)
 	@for s in $(PBX_SIDES); do PBX_SIDE=$$s ./$(BIN) test bench/pbx_scale.lua | grep '^pbx'; done
 
 clean:
-	rm -rf build build-san mvmpm
+	rm -rf build build-san build-fuzz mvmpm
+
+# the scene loader and Lua API under libFuzzer (clang), ASan and UBSan,
+# seeded with the scenes; FUZZ_SECONDS (default 120) of fuzzing, the run
+# counts printed by libFuzzer at the end
+FUZZ_SECONDS ?= 120
+fuzz:
+	@$(MAKE) --no-print-directory FUZZ=1 build-fuzz/fuzz_scene
+	@mkdir -p build-fuzz/corpus build-fuzz/fuzz-out && cp scenarios/*.lua build-fuzz/corpus/
+	cd build-fuzz && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 \
+	  -timeout=10 -max_len=8192 corpus 2>&1 | tail -15
+
+build-fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(LIBOBJ)
+	$(CC) $(CFLAGS) -fsanitize=fuzzer -Isrc -o $@ $< $(LIBOBJ) $(LDLIBS)
 
 # the hard-case suite (not yet part of make test: see tests/hard/README)
 hard: $(BIN)
@@ -75,7 +94,7 @@ hard: $(BIN)
 figures: $(BIN)
 	./$(BIN) test docs/figures/fig5.lua
 
-.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale
+.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale fuzz
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

@@ -246,6 +246,37 @@ static void drive_spec(lua_State *L, lsim *ls, int simidx, int b) {
   }
 }
 
+/* the seeding buffers of one body, in a userdata so that an error
+** anywhere while seeding (a Lua error jumps past any free) leaves them
+** to the collector */
+typedef struct seedbox {
+  seed sd;
+  size_t *taken, ntaken;
+} seedbox;
+
+static void seedbox_free(seedbox *bx) {
+  free(bx->sd.x);
+  free(bx->sd.vol);
+  free(bx->taken);
+  memset(bx, 0, sizeof *bx);
+}
+
+static int seedbox_gc(lua_State *L) {
+  seedbox_free(lua_touserdata(L, 1));
+  return 0;
+}
+
+static seedbox *seedbox_new(lua_State *L) {
+  seedbox *bx = lua_newuserdatauv(L, sizeof *bx, 0);
+  memset(bx, 0, sizeof *bx);
+  if (luaL_newmetatable(L, "mvmpm.seedbox")) {
+    lua_pushcfunction(L, seedbox_gc);
+    lua_setfield(L, -2, "__gc");
+  }
+  lua_setmetatable(L, -2);
+  return bx;
+}
+
 /* r along d as the nearest image where d is periodic */
 static double near(const sim *s, int d, double r) {
   if (s->g.periodic[d]) {
@@ -264,8 +295,8 @@ int lbody_new(lua_State *L) {
   static const char *const ovl[] = {"error", "skip", NULL};
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
-  seed sd = {0};
-  size_t *taken = NULL, ntaken = 0, k;
+  seedbox *bx;
+  size_t k;
   double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond, T0;
   size_t first;
   int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0;
@@ -273,6 +304,8 @@ int lbody_new(lua_State *L) {
   int32_t field;
   char name[32];
   luaL_checktype(L, 2, LUA_TTABLE);
+  lua_settop(L, 2);
+  bx = seedbox_new(L); /* index 3: freed by the collector on any error */
   chk_keys(L, 2, "body", keys);
   if (s->started) luaL_error(L, "body: bodies must be added before the first step");
   lua_getfield(L, 2, "name");
@@ -317,22 +350,21 @@ int lbody_new(lua_State *L) {
         outside = 1;
     }
     lua_insert(L, -2);  /* name on top for messages */
-    seed_shape(L, ls, lua_gettop(L) - 1, skip || isrest, s->nbody, &sd, &taken,
-               &ntaken);
+    seed_shape(L, ls, lua_gettop(L) - 1, skip || isrest, s->nbody, &bx->sd, &bx->taken,
+               &bx->ntaken);
     if (exact) {
       double a = lshape_area(sh);
       if (a < 0)
         luaL_error(L, "body '%s': volume = \"exact\" needs a shape of known area",
                    name);
-      if (sd.n) scale = a / (sd.n * sd.vol[0]);
+      if (bx->sd.n) scale = a / (bx->sd.n * bx->sd.vol[0]);
     }
     lua_pop(L, 2);
   } else {
-    seed_points(L, ls, &sd);
+    seed_points(L, ls, &bx->sd);
     lua_pop(L, 3);
   }
-  if (sd.n == 0) {
-    free(sd.x); free(sd.vol); free(taken);
+  if (bx->sd.n == 0) {
     if (outside)
       chk_error(L, "body '%s': its shape (x %g .. %g, y %g .. %g) lies outside "
                    "the domain (x %g .. %g, y %g .. %g)", name, blo[0], bhi[0],
@@ -344,18 +376,17 @@ int lbody_new(lua_State *L) {
   field = fieldof(L, 1, ls, !lua_isnil(L, -1));
   lua_pop(L, 1);
   b = sim_add_body(s, name, mi, field);
-  if (b < 0) { free(sd.x); free(sd.vol); free(taken); luaL_error(L, "body: out of memory"); }
-  for (k = 0; k < ntaken; k++) ls->occ[taken[k]] = b;
-  free(taken);
+  if (b < 0) { luaL_error(L, "body: out of memory"); }
+  for (k = 0; k < bx->ntaken; k++) ls->occ[bx->taken[k]] = b;
   /* the centre of the spin, and each point's arm from it, measured as the
   ** nearest image across periodic sides (a body across a seam spins
   ** about where it is, not about the middle of the domain) */
-  for (k = 0; k < sd.n; k++)
-    for (d = 0; d < DIM; d++) c[d] += near(s, d, sd.x[DIM * k + d] - sd.x[d]) / sd.n;
-  for (d = 0; d < DIM; d++) c[d] += sd.x[d];
+  for (k = 0; k < bx->sd.n; k++)
+    for (d = 0; d < DIM; d++) c[d] += near(s, d, bx->sd.x[DIM * k + d] - bx->sd.x[d]) / bx->sd.n;
+  for (d = 0; d < DIM; d++) c[d] += bx->sd.x[d];
   first = s->ps.n;
-  for (k = 0; k < sd.n; k++) {
-    double *x = &sd.x[DIM * k], v[DIM];
+  for (k = 0; k < bx->sd.n; k++) {
+    double *x = &bx->sd.x[DIM * k], v[DIM];
     for (d = 0; d < DIM; d++) v[d] = v0[d];
     v[0] -= omega * near(s, 1, x[1] - c[1]);
     v[1] += omega * near(s, 0, x[0] - c[0]);
@@ -367,19 +398,15 @@ int lbody_new(lua_State *L) {
         int isnum;
         v[d] += lua_tonumberx(L, d - DIM, &isnum);
         if (!isnum) {
-          free(sd.x); free(sd.vol);
           luaL_error(L, "body '%s': velocity function must return %d numbers", name, DIM);
         }
       }
       lua_pop(L, DIM);
     }
-    if (sim_add_particle(s, b, x, v, sd.vol[k] * scale) < 0) {
-      free(sd.x); free(sd.vol);
+    if (sim_add_particle(s, b, x, v, bx->sd.vol[k] * scale) < 0) {
       luaL_error(L, "body: out of memory for particles");
     }
   }
-  free(sd.x);
-  free(sd.vol);
   if (s->faff >= 0 && omega != 0) { /* APIC: the rigid spin is affine */
     double *c01 = particles_comp(&s->ps, s->faff, 1);
     double *c10 = particles_comp(&s->ps, s->faff, 2);
@@ -391,6 +418,7 @@ int lbody_new(lua_State *L) {
     bp = particles_comp(&s->ps, s->fbond, 0);
     for (k = first; k < s->ps.n; k++) bp[k] = bond;
   }
+  seedbox_free(bx); /* done with it: give the memory back now */
   drive_spec(L, ls, 1, b);
   /* initial temperature: the body's, else the scene's (thermal.h) */
   if (!isnan(T0) && thermal_enable(s)) luaL_error(L, "body: out of memory");

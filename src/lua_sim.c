@@ -165,9 +165,16 @@ int lsim_new(lua_State *L) {
   shape = chk_option(L, 1, what, "shape", SHAPE_LINEAR, shape_names);
   bytes = grid_bytes(lo, hi, h, shape_pad(shape)) +
           nodes * pow(ppc, DIM) * (8.0 * (2 * DIM + 2 + 2 * NTENS + NSTRESS + 2) + 16);
-  if (bytes > 16e9)
-    chk_error(L, "sim: %.3g cells would need about %.3g GB (limit 16 GB); "
-                  "use a coarser 'cell' or a smaller domain", nodes, bytes / 1e9);
+  /* refuse before allocating; MVMPM_MAX_GB lowers (or raises) the
+  ** 16 GB ceiling, e.g. for fuzzing under a memory limit */
+  {
+    const char *env = getenv("MVMPM_MAX_GB");
+    double limit = env && atof(env) > 0 ? atof(env) * 1e9 : 16e9;
+    if (bytes > limit)
+      chk_error(L, "sim: %.3g cells would need about %.3g GB (limit %.3g GB); "
+                   "use a coarser 'cell' or a smaller domain", nodes,
+                bytes / 1e9, limit / 1e9);
+  }
   /* sides */
   lua_getfield(L, 1, "sides");
   sidx = lua_gettop(L);

@@ -1,0 +1,41 @@
+-- Two elastic blocks bonded face to face, pulled apart by rigid grips
+-- whose speed ramps up smoothly (so the load is nearly quasi-static).
+-- Top and bottom are periodic, so the blocks are in uniaxial strain and
+-- the stress in them is sigma_xx = (K + 4G/3) eps_xx.  The interface
+-- between A and B holds until its normal traction reaches the bond
+-- strength, then lets go at once along its whole length.
+--
+--   mvmpm run scenarios/bond_pull.lua --set strength=0.02
+local mvmpm = require "mvmpm"
+
+local P = mvmpm.params {
+  strength = 0.01,     -- bond strength of the A-B interface (stress)
+  V0 = 0.002,          -- grip speed after the ramp
+  ramp = 8,            -- ramp time of the grip speed
+  cells = 16,          -- cells per unit length
+  t_end = 12,
+}
+
+local sim = mvmpm.sim {
+  domain = {x = {0, 3}, y = {0, 0.5}},
+  cell = 1 / P.cells,
+  t_end = P.t_end,
+  sides = {left = "free", right = "free", bottom = "periodic", top = "periodic"},
+}
+local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
+local function grip(sign)
+  return function(t) return sign * P.V0 * math.min(1, t / P.ramp), 0 end
+end
+-- the blocks carry a strong bond (1) to their grips; the A-B pair's law
+-- caps their interface at the strength under study
+sim:body {name = "gripL", shape = mvmpm.rect {lo = {0.25, 0}, hi = {0.5, 0.5}},
+          material = m, driven = grip(-1)}
+local a = sim:body {name = "A", shape = mvmpm.rect {lo = {0.5, 0}, hi = {1.5, 0.5}},
+                    material = m, bond = 1}
+local b = sim:body {name = "B", shape = mvmpm.rect {lo = {1.5, 0}, hi = {2.5, 0.5}},
+                    material = m, bond = 1}
+sim:body {name = "gripR", shape = mvmpm.rect {lo = {2.5, 0}, hi = {2.75, 0.5}},
+          material = m, driven = grip(1)}
+sim:contact(a, b, {bond = P.strength})
+sim:output {dir = "out/bond_pull", every = 0.5, csv_every = 10}
+return sim

@@ -1,0 +1,192 @@
+-- A PBX 9501-like grain bed under shear (the report's Figure 9 geometry,
+-- sheared like its small cell, Figures 6-8).  A 1.2 mm square in SI
+-- units, periodic top and bottom; HMX grains as discs from a seeded
+-- bimodal bed (mvmpm.pack: coarse mean 150 um, fines 30 um, coarse :
+-- fine = 3 : 1 by mass, 75 % by area = 82 % by mass, as the report's
+-- "approximately 80 % by weight"); fines under `min_grain` folded into
+-- a dirty binder that fills the rest.  The left and right sides are
+-- stick walls moving tangentially, left down and right up, after a
+-- smooth sin^2 ramp; grains within one gap of a side are driven with
+-- it (rigid), like the report's cylinders "fixed to these boundaries".
+--
+--   mvmpm run scenarios/pbx9501.lua                      -- with binder
+--   mvmpm run scenarios/pbx9501.lua --set binder=false    -- dry grains
+--   mvmpm run scenarios/pbx9501.lua --set size=0.6e-3 --set min_grain=30e-6
+--
+-- Materials (lua/mvmpm/materials.lua, sources there): grains are J2
+-- elastic-plastic HMX (E 15 GPa, nu 0.3, yield 0.26 GPa, 1900 kg/m^3).
+-- The binder is the PLACEHOLDER set (rubbery Maxwell solid, glassy
+-- shear modulus 26 MPa, K 2.5 GPa) with the dirty binder's density; it
+-- is chosen over the PBX 9501 composite set because that set describes
+-- the whole composite (glassy shear modulus 2.6 GPa, a hundred times a
+-- rubbery binder's), which as the phase between explicit grains would
+-- make the binder nearly as stiff as the crystals.  Neither is binder
+-- data; binder_set = "composite" runs the other for comparison.
+-- Moduli are not raised for the folded fines.
+--
+-- Time scale: the step follows the HMX wave speed (about 3.3 km/s), so
+-- with a 2 um cell dt is about 0.15 ns.  The default shear rate, 1e5/s,
+-- moves the walls at 60 m/s (2 % of the wave speed); 100 % strain then
+-- takes 10 us, about 65,000 steps.  See docs/pbx.md for what that costs.
+local mvmpm = require "mvmpm"
+local pack = require "mvmpm.pack"
+local M = require "mvmpm.materials"
+
+local P = mvmpm.params {
+  seed = 1,            -- the bed's seed
+  packing = 0.75,      -- area fraction of the resolved grains
+  size = 1.2e-3,       -- side of the square, m
+  scale = 1.0,         -- multiplies every grain diameter (smaller: more grains)
+  coarse = 150e-6,     -- mean coarse diameter, m (times scale)
+  fine = 30e-6,        -- mean fine diameter, m (times scale)
+  min_grain = 16e-6,   -- smallest resolved diameter, m (times scale); smaller fines are folded
+  cells = 8,           -- cells across the smallest resolved grain
+  gap = 1,             -- smallest gap between grains at seeding, in cells (>= 1)
+  ppc = 2,             -- particles per cell per direction
+  binder = true,       -- false: dry grains only
+  binder_set = "placeholder", -- or "composite"
+  bond = 5e6,          -- grain-binder bond strength, Pa (0: no bonds)
+  friction = 0.3,      -- Coulomb friction between grains, and grain-binder once debonded
+  rate = 1e5,          -- nominal shear strain rate (v_right - v_left) / width, 1/s
+  strain = 1.0,        -- nominal shear strain to reach
+  ramp = 0.02,         -- strain over which the walls reach speed
+  t_end = 0,           -- > 0: stop here instead of at `strain`
+  record = 20,         -- steps between rows of pbx_history.csv
+  images = 0.1,        -- strain between pictures (0: none)
+}
+
+local function check(ok, what)
+  if not ok then error("pbx9501: " .. what, 3) end
+end
+check(P.cells >= 1, "cells must be >= 1 (got " .. P.cells .. ")")
+check(P.gap >= 1, "gap must be at least one cell so that grains never share a cell (got "
+      .. P.gap .. ")")
+check(P.rate > 0, "rate must be > 0 (got " .. P.rate .. ")")
+check(P.binder_set == "placeholder" or P.binder_set == "composite",
+      "binder_set must be \"placeholder\" or \"composite\" (got " .. P.binder_set .. ")")
+
+-- the cell: `cells` across the smallest resolved grain, rounded down to
+-- a whole number of cells across the square
+local W = P.size
+local dmin = P.min_grain * P.scale
+local n = math.ceil(W / (dmin / P.cells) - 1e-9)
+local h = W / n
+
+local bed = pack.bed {
+  width = W, height = W, packing = P.packing, seed = P.seed,
+  coarse = {mean = P.coarse * P.scale, spread = 0.25},
+  fine = {mean = P.fine * P.scale, spread = 0.35},
+  mass_ratio = 3, min_diameter = dmin, gap = P.gap * h,
+  density = M.HMX.density, binder_density = M.BINDER_PLACEHOLDER.density,
+}
+local st = bed.stats
+print(pack.summary(bed))
+
+-- walls: V0 = rate W / 2 each, reached after the ramp with sin^2
+local V0 = P.rate * W / 2
+local Tr = P.ramp / P.rate
+local function speed(t)
+  if t < Tr then return V0 * math.sin(0.5 * math.pi * t / Tr) ^ 2 end
+  return V0
+end
+-- nominal strain at t: 2 * integral of speed / W
+local function strain_at(t)
+  local x
+  if t < Tr then x = V0 * (0.5 * t - Tr / (2 * math.pi) * math.sin(math.pi * t / Tr))
+  else x = V0 * (t - 0.5 * Tr) end
+  return 2 * x / W
+end
+local t_end = P.t_end > 0 and P.t_end or P.strain / P.rate + 0.5 * Tr
+
+local sim = mvmpm.sim {
+  domain = {x = {0, W}, y = {0, W}}, cell = h, ppc = P.ppc,
+  t_end = t_end, units = "SI",
+  sides = {
+    bottom = "periodic", top = "periodic",
+    left = {"wall", friction = "stick", velocity = function(t) return 0, -speed(t) end},
+    right = {"wall", friction = "stick", velocity = function(t) return 0, speed(t) end},
+  },
+  contact = {friction = P.friction, bond = false},
+}
+
+local hmx = M.hmx {name = "HMX"}
+local grains, left, right = {}, {}, {}
+local bond = P.binder and P.bond > 0 and P.bond or nil
+for i, g in ipairs(bed.grains) do
+  local spec = {name = string.format("%s%d", g.class == "coarse" and "c" or "f", i),
+                shape = mvmpm.disk {center = {g.x, g.y}, radius = g.r},
+                material = hmx, bond = bond}
+  if g.side == "left" then spec.driven = function(t) return 0, -speed(t) end
+  elseif g.side == "right" then spec.driven = function(t) return 0, speed(t) end end
+  local b = sim:body(spec)
+  grains[#grains + 1] = b
+  if g.side == "left" then left[#left + 1] = b
+  elseif g.side == "right" then right[#right + 1] = b end
+end
+
+local binder
+if P.binder then
+  local over = {name = "binder", density = st.dirty_binder_density}
+  local mat = P.binder_set == "composite" and M.pbx9501_composite(over)
+              or M.binder_placeholder(over)
+  binder = sim:body {name = "binder", shape = mvmpm.rest(), material = mat, bond = bond}
+  -- grains bond to the binder up to `bond`, never to each other
+  if bond then
+    for _, g in ipairs(grains) do sim:contact(g, binder, {friction = P.friction, bond = true}) end
+  end
+end
+
+print(string.format(
+  "pbx9501: %d x %d cells of %.3g m (%d across the smallest grain), %d particles, %d bodies; "
+  .. "walls at %.4g m/s (rate %.3g/s), t_end %.4g s (strain %.3g), dt %.3g s",
+  n, n, h, P.cells, sim.n, sim.nbody, V0, P.rate, t_end, strain_at(t_end), sim:stable_dt()))
+
+-- the record: nominal strain, the shear stress the sides carry (wall
+-- plus attached grains, per unit thickness over the height), energies,
+-- the bonded area left
+local function side_force(name, list)
+  local _, fy = sim:wall_force(name)
+  for _, b in ipairs(list) do
+    local _, gy = b:force()
+    fy = fy + gy
+  end
+  return fy
+end
+
+local hist, area0, written = nil, nil, false
+local next_image = 0
+sim:every {steps = 1, fn = function(s)
+  local dir = s.outdir
+  if not written and dir ~= "" then
+    written = true
+    pack.write_csv(bed, dir .. "/pbx")
+    hist = assert(io.open(dir .. "/pbx_history.csv", "w"))
+    hist:write("step,t,strain,tau,fy_left,fy_right,kinetic,strain_energy,plastic,viscous,"
+               .. "friction,boundary_work,residual,bonded_area,debonded_fraction,jmin,jmax\n")
+  end
+  local e = s:energy()
+  if not area0 and e.bonded_area > 0 then area0 = e.bonded_area end
+  if hist and (s.steps % P.record == 0 or s.t >= t_end) then
+    local fl, fr = side_force("left", left), side_force("right", right)
+    hist:write(string.format(
+      "%d,%.9g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+      s.steps, s.t, strain_at(s.t), (fr - fl) / (2 * W), fl, fr, e.kinetic, e.strain,
+      e.plastic, e.viscous, e.dissipated, e.boundary_work, e.residual, e.bonded_area,
+      area0 and 1 - e.bonded_area / area0 or 0, e.jmin, e.jmax))
+    hist:flush()
+  end
+  if dir ~= "" and P.images > 0 and strain_at(s.t) >= next_image then
+    local tag = string.format("%03d", math.floor(100 * next_image + 0.5))
+    s:render {file = dir .. "/pbx_body_" .. tag .. ".png", by = "body", width = 900,
+              title = string.format("grains, strain %.2f", strain_at(s.t))}
+    s:render {file = dir .. "/pbx_sdiff_" .. tag .. ".png", by = "sdiff", width = 900,
+              title = string.format("|s1 - s2| (Pa), strain %.2f", strain_at(s.t))}
+    next_image = next_image + P.images
+  end
+end}
+sim:output {every = t_end / 10, csv_every = P.record}
+
+-- for scripts that load the scene (tests, bench): the bed and helpers
+PBX = {bed = bed, grains = grains, binder = binder, left = left, right = right,
+       strain_at = strain_at, side_force = side_force, V0 = V0, cell = h}
+return sim

@@ -86,6 +86,12 @@ fuzz:
 build-fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(LIBOBJ)
 	$(CC) $(CFLAGS) -fsanitize=fuzzer -Isrc -o $@ $< $(LIBOBJ) $(LDLIBS)
 
+# many random scenes under the sanitizers (make test runs 20 seeds)
+RANDOM_SEEDS ?= 1-500
+random:
+	@$(MAKE) --no-print-directory SAN=1 build-san/mvmpm
+	SEEDS=$(RANDOM_SEEDS) ./build-san/mvmpm test tests/random/gen.lua
+
 # the hard-case suite (not yet part of make test: see tests/hard/README)
 hard: $(BIN)
 	./$(BIN) test tests/hard/*.lua
@@ -94,7 +100,7 @@ hard: $(BIN)
 figures: $(BIN)
 	./$(BIN) test docs/figures/fig5.lua
 
-.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale fuzz
+.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale fuzz random
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

@@ -30,7 +30,11 @@ local case = {
   metrics = {{key = "stress", label = "max |sigma| / (2 K' beta t)"}},
   grid = {cells = {8, 12, 16, 24, 32}, shape = {"linear", "gimp", "bspline2"},
           transfer = {"flip", "apic"}, flip = {1, 0}, update = {"musl", "usl"}},
-  skip = function(s) return s.update == "usl" and (s.transfer ~= "flip" or s.flip ~= 1) end,
+  -- PIC only on linear hats; USL only on linear hats with FLIP
+  skip = function(s)
+    if s.update == "usl" then return s.transfer ~= "flip" or s.flip ~= 1 or s.shape ~= "linear" end
+    return s.flip == 0 and s.shape ~= "linear"
+  end,
   run = function(s, clock)
     local h = side / s.cells
     local sim = mvmpm.sim {domain = {x = {0, 3}, y = {0, 2}}, cell = h, ppc = s.ppc,

@@ -19,9 +19,12 @@ local case = {
   extra = {"dE"},
   grid = {cells = {8, 12, 16, 24, 32, 48}, shape = {"linear", "gimp", "bspline2"},
           transfer = {"flip", "apic"}, flip = {1, 0}, update = {"musl", "usl"}},
-  -- USL only with FLIP (enough to show what it does)
-  skip = function(s) return s.update == "usl" and (s.transfer ~= "flip" or s.flip ~= 1) end,
   baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
+  -- PIC only on linear hats; USL only with FLIP (enough to show what each does)
+  skip = function(s)
+    if s.update == "usl" then return s.transfer ~= "flip" or s.flip ~= 1 end
+    return s.flip == 0 and s.shape ~= "linear"
+  end,
   run = function(s, clock)
     local sim = mvmpm.load("scenarios/cylinder_bounce.lua",
       {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer, flip = s.flip,

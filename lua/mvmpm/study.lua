@@ -126,6 +126,19 @@ local function varied(grid)
   return v
 end
 
+-- a log range over the values with room above them for the legend
+local function logrange(vals, room)
+  local lo, hi = math.huge, -math.huge
+  for _, v in ipairs(vals) do
+    if v > 0 and v < math.huge then lo, hi = math.min(lo, v), math.max(hi, v) end
+  end
+  if lo == math.huge then return nil end
+  if hi <= lo then lo, hi = lo / 2, hi * 2 end
+  local a, b = math.log(lo, 10), math.log(hi, 10)
+  local span = math.max(b - a, 0.5)
+  return {10 ^ (a - 0.05 * span), 10 ^ (b + (room or 0) * span + 0.05 * span)}
+end
+
 local shape_name = {linear = "linear", gimp = "GIMP", bspline2 = "B-spline"}
 
 -- a scheme's label: shape, transfer, update, and ppc / cfl when varied
@@ -166,20 +179,17 @@ end
 -- the clock a case advances its simulation with: only stepping is timed
 local function new_clock(r)
   local c = {seconds = 0, sim = nil, rep = r}
-  function c.run(sim, t)
+  -- a failing step still counts its time, then raises the error again
+  local function timed(f, sim, a)
     c.sim = sim
     local t0 = mvmpm.clock()
-    local r = sim:run(t)
+    local ok, r = pcall(f, sim, a)
     c.seconds = c.seconds + (mvmpm.clock() - t0)
+    if not ok then error(r, 0) end
     return r
   end
-  function c.step(sim, n)
-    c.sim = sim
-    local t0 = mvmpm.clock()
-    local r = sim:step(n)
-    c.seconds = c.seconds + (mvmpm.clock() - t0)
-    return r
-  end
+  function c.run(sim, t) return timed(sim.run, sim, t) end
+  function c.step(sim, n) return timed(sim.step, sim, n) end
   return c
 end
 
@@ -294,6 +304,7 @@ function S.run(case, opts)
 
   local md = {}
   local function w(...) md[#md + 1] = string.format(...) end
+  local function esc(l) return (l:gsub("|", "\\|")) end
   w("## %s\n", case.title or case.name)
   if case.reference then w("Reference: %s\n", case.reference) end
   w("%d settings, %d repeats each, %.0f s of stepping in all.  `cells` counts cells across %s.\n",
@@ -302,7 +313,7 @@ function S.run(case, opts)
   for mi, m in ipairs(metrics) do
     local k = m.key
     -- orders
-    w("\n### %s: convergence order per scheme (least squares, log-log)\n", m.label)
+    w("\n### %s: convergence order per scheme (least squares, log-log)\n", esc(m.label))
     w("| scheme | order p | points | error at finest | cells |")
     w("|---|---|---|---|---|")
     local conv = {}
@@ -320,8 +331,10 @@ function S.run(case, opts)
         w("| %s | - | %d | %s | %s |", sc, #hs, last and string.format("%.3g", math.abs(last[k])) or "-",
           last and tostring(last.cells) or "-")
       end
-      conv[#conv + 1] = {x = hs, y = es, label = p and string.format("%s (p = %.2f)", sc, p) or sc,
-                         style = "both"}
+      if #hs > 0 then
+        conv[#conv + 1] = {x = hs, y = es, label = p and string.format("%s (p = %.2f)", sc, p) or sc,
+                           style = "both"}
+      end
     end
     -- failures
     local failed = {}
@@ -335,16 +348,21 @@ function S.run(case, opts)
       end
     end
     local ylabel = m.label
+    local allerr = {}
+    for _, r in ipairs(rows) do
+      if r.status == "ok" and r[k] then allerr[#allerr + 1] = math.abs(r[k]) end
+    end
     mvmpm.plot {file = string.format("%s/accuracy_%s%s_convergence.png", figdir, case.name,
                                      mi == 1 and "" or "_" .. k),
                 title = (case.title or case.name) .. ": " .. m.label .. " vs resolution",
                 xlabel = "cell size h / " .. (case.length or "L"), ylabel = ylabel,
-                xlog = true, ylog = true, series = conv, width = 900, height = 620}
+                xlog = true, ylog = true, series = conv, width = 1000, height = 720,
+                yrange = logrange(allerr, 0.25 + 0.07 * #conv)}
 
     -- Pareto
     local front = S.pareto(rows, k)
-    w("\n### %s: Pareto front (no setting is both faster and more accurate)\n", m.label)
-    w("| scheme | cells | %s | seconds | particles | s per unit time per 1000 particles |", m.label)
+    w("\n### %s: Pareto front (no setting is both faster and more accurate)\n", esc(m.label))
+    w("| scheme | cells | %s | seconds | particles | s per unit time per 1000 particles |", esc(m.label))
     w("|---|---|---|---|---|---|")
     for _, r in ipairs(front) do
       w("| %s | %d | %.3g | %.3g | %d | %.3g |", r.scheme, r.cells, math.abs(r[k]), r.seconds,
@@ -356,7 +374,7 @@ function S.run(case, opts)
       for _, r in ipairs(by[sc]) do
         if r.status == "ok" and r[k] then xs[#xs + 1], ys[#ys + 1] = r.seconds, math.abs(r[k]) end
       end
-      ser[#ser + 1] = {x = xs, y = ys, label = sc, style = "points"}
+      if #xs > 0 then ser[#ser + 1] = {x = xs, y = ys, label = sc, style = "points"} end
     end
     local fx, fy = {}, {}
     for _, r in ipairs(front) do fx[#fx + 1], fy[#fy + 1] = r.seconds, math.abs(r[k]) end
@@ -365,12 +383,13 @@ function S.run(case, opts)
                                      mi == 1 and "" or "_" .. k),
                 title = (case.title or case.name) .. ": " .. m.label .. " vs wall time",
                 xlabel = "wall time of the run, s (median of " .. R .. ")", ylabel = ylabel,
-                xlog = true, ylog = true, series = ser, width = 900, height = 620}
+                xlog = true, ylog = true, series = ser, width = 1000, height = 720,
+                yrange = logrange(allerr, 0.25 + 0.07 * #ser)}
   end
 
   -- the cheapest setting for each error level (primary metric)
-  w("\n### Cheapest setting for a given %s\n", metrics[1].label)
-  w("| %s at most | scheme | cells | measured | seconds | s per unit time per 1000 particles |", metrics[1].label)
+  w("\n### Cheapest setting for a given %s\n", esc(metrics[1].label))
+  w("| %s at most | scheme | cells | measured | seconds | s per unit time per 1000 particles |", esc(metrics[1].label))
   w("|---|---|---|---|---|---|")
   for _, th in ipairs(thresholds) do
     local best
@@ -402,7 +421,7 @@ function S.run(case, opts)
              (not best or math.abs(r[k]) < math.abs(best[k])) then best = r end
         end
         w("- %s: %s at %d cells: %.3g in %.3g s; best within that time: %s at %d cells: %.3g in %.3g s",
-          m.label, base.scheme, base.cells, math.abs(base[k]), base.seconds,
+          esc(m.label), base.scheme, base.cells, math.abs(base[k]), base.seconds,
           best.scheme, best.cells, math.abs(best[k]), best.seconds)
       end
     end

@@ -29,7 +29,7 @@ local case = {
   reference = string.format("angular momentum L(0); spin omega(0) / (1 + %.3g)", dI),
   metrics = {{key = "angmom", label = "|L/L0 - 1| at t = 20"},
              {key = "spin", label = "|omega/omega_ref - 1|"}},
-  extra = {"dL", "omega_mean"},
+  extra = {"dL", "omega_mean", "dE"},
   grid = {cells = {8, 12, 16, 24, 32, 48}, shape = {"linear", "gimp", "bspline2"},
           transfer = {"flip", "apic"}, flip = {1, 0}},
   run = function(s, clock)
@@ -38,7 +38,7 @@ local case = {
       shape = s.shape, transfer = s.transfer, flip = s.flip, update = s.update, cfl = s.cfl}
     local disc = sim:body {shape = mvmpm.disk {center = {1, 1}, radius = R},
       material = mvmpm.elastic {K = K, G = G, density = rho}, angular_velocity = w0}
-    local d0 = disc:diag()
+    local d0, e0 = disc:diag(), sim:energy().total
     local L0, wref = d0.angmom, d0.omega / (1 + dI)
     clock.run(sim, 10)
     local sum, n = 0, 0
@@ -47,7 +47,8 @@ local case = {
       sum, n = sum + disc:omega(), n + 1
     end
     local dL = disc:diag().angmom / L0 - 1
-    return {angmom = math.abs(dL), dL = dL, spin = math.abs(sum / n / wref - 1), omega_mean = sum / n}
+    return {angmom = math.abs(dL), dL = dL, spin = math.abs(sum / n / wref - 1), omega_mean = sum / n,
+            dE = sim:energy().total / e0 - 1}
   end,
 }
 return S.main(case)

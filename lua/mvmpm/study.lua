@@ -248,9 +248,17 @@ function S.run(case, opts)
     for k, v in pairs(case) do c[k] = v end
     c.grid, case, R = g, c, opts.repeats or 1
   end
+  -- STUDY_FROM_CSV=1: no runs, the summary and plots again from the CSV
+  -- a previous run wrote (e.g. after changing how they are drawn)
+  if os.getenv("STUDY_FROM_CSV") == "1" then
+    local rows = S.read_csv(dir .. "/" .. case.name .. ".csv")
+    local total = 0
+    for _, r in ipairs(rows) do total = total + (r.seconds or 0) * (r.repeats or 1) end
+    return S.summary(case, rows, {repeats = R, total = total, dir = dir, figdir = figdir,
+                                  thresholds = thresholds})
+  end
   local vary = varied(case.grid)
   local metrics = case.metrics
-  local key = metrics[1].key
   local rows = {}
   local t_start = mvmpm.clock()
   print(string.format("study %s: %s (R = %d repeats)", case.name, case.title or "", R))
@@ -274,15 +282,25 @@ function S.run(case, opts)
     end
   end
   local total = mvmpm.clock() - t_start
+  S.write_csv(case, rows, dir .. "/" .. case.name .. ".csv")
+  S.write_csv(case, rows, figdir .. "/accuracy_" .. case.name .. ".csv")
+  return S.summary(case, rows, {repeats = R, total = total, dir = dir, figdir = figdir,
+                                thresholds = thresholds})
+end
 
-  -- CSV
+-- the CSV columns of a case
+local function columns(case)
   local cols = {"scheme", "cells", "ppc", "shape", "transfer", "flip", "update", "cfl"}
-  for _, m in ipairs(metrics) do cols[#cols + 1] = m.key end
-  local extra = {}
-  for _, c in ipairs(case.extra or {}) do cols[#cols + 1] = c; extra[c] = true end
+  for _, m in ipairs(case.metrics) do cols[#cols + 1] = m.key end
+  for _, c in ipairs(case.extra or {}) do cols[#cols + 1] = c end
   for _, c in ipairs {"seconds", "seconds_min", "seconds_max", "repeats", "particles", "steps", "t",
                       "cost", "us_per_particle_step", "status"} do cols[#cols + 1] = c end
-  local f = assert(io.open(dir .. "/" .. case.name .. ".csv", "w"))
+  return cols
+end
+
+function S.write_csv(case, rows, file)
+  local cols = columns(case)
+  local f = assert(io.open(file, "w"))
   f:write(table.concat(cols, ","), "\n")
   for _, r in ipairs(rows) do
     local v = {}
@@ -294,7 +312,57 @@ function S.run(case, opts)
     f:write(table.concat(v, ","), "\n")
   end
   f:close()
+end
 
+-- rows back from a CSV written by S.write_csv (numbers as numbers)
+function S.read_csv(file)
+  local f = assert(io.open(file))
+  local function split(line)
+    local out, i = {}, 1
+    while i <= #line + 1 do
+      if line:sub(i, i) == '"' then
+        local j, buf = i + 1, {}
+        while true do
+          local c = line:sub(j, j)
+          if c == '"' and line:sub(j + 1, j + 1) == '"' then buf[#buf + 1] = '"'; j = j + 2
+          elseif c == '"' or c == "" then break
+          else buf[#buf + 1] = c; j = j + 1 end
+        end
+        out[#out + 1] = table.concat(buf)
+        i = j + 2
+      else
+        local j = line:find(",", i, true) or #line + 1
+        out[#out + 1] = line:sub(i, j - 1)
+        i = j + 1
+      end
+    end
+    return out
+  end
+  local head = split(f:read("l"))
+  local rows = {}
+  for line in f:lines() do
+    local v, r = split(line), {}
+    for i, c in ipairs(head) do
+      local x = v[i]
+      if x == "" then x = nil
+      elseif c ~= "scheme" and c ~= "status" and tonumber(x) then x = tonumber(x)
+      elseif x == "nan" or x == "-nan" then x = 0 / 0 end
+      r[c] = x
+    end
+    if r.transfer == "apic" then r.flip = 1 end
+    r.h = 1 / r.cells
+    rows[#rows + 1] = r
+  end
+  f:close()
+  return rows
+end
+
+-- the summary of a study's rows: the MD file and the plots
+function S.summary(case, rows, o)
+  local R, total, dir, figdir, thresholds = o.repeats, o.total, o.dir, o.figdir, o.thresholds
+  for _, r in ipairs(rows) do if r.repeats and r.repeats > 0 then R = r.repeats end end
+  local metrics = case.metrics
+  local key = metrics[1].key
   -- group by scheme, in first-seen order
   local schemes, by = {}, {}
   for _, r in ipairs(rows) do
@@ -405,6 +473,31 @@ function S.run(case, opts)
     end
   end
 
+  -- the same, asking the scheme to stay within the level at every finer
+  -- resolution of the grid too (an error that changes sign can pass
+  -- through zero at one resolution by luck)
+  w("\nThe same, for a setting whose scheme also stays within that level at every finer resolution in the grid:\n")
+  w("| %s at most | scheme | cells | measured | seconds | s per unit time per 1000 particles |", esc(metrics[1].label))
+  w("|---|---|---|---|---|---|")
+  local function holds(r, th)
+    for _, q in ipairs(by[r.scheme]) do
+      if q.cells >= r.cells and (q.status ~= "ok" or not q[key] or math.abs(q[key]) > th) then return false end
+    end
+    return true
+  end
+  for _, th in ipairs(thresholds) do
+    local best
+    for _, r in ipairs(rows) do
+      if r.status == "ok" and r[key] and holds(r, th) and (not best or r.seconds < best.seconds) then best = r end
+    end
+    if best then
+      w("| %g | %s | %d | %.3g | %.3g | %.3g |", th, best.scheme, best.cells, math.abs(best[key]),
+        best.seconds, best.cost)
+    else
+      w("| %g | none in the grid | | | | |", th)
+    end
+  end
+
   -- the baseline against the best setting at the same wall time
   if case.baseline then
     local b = {}
@@ -423,6 +516,14 @@ function S.run(case, opts)
         w("- %s: %s at %d cells: %.3g in %.3g s; best within that time: %s at %d cells: %.3g in %.3g s",
           esc(m.label), base.scheme, base.cells, math.abs(base[k]), base.seconds,
           best.scheme, best.cells, math.abs(best[k]), best.seconds)
+        -- timings carry noise: also the best within 1.5 times the time
+        local near
+        for _, r in ipairs(rows) do
+          if r.status == "ok" and r[k] and r.seconds <= base.seconds * 1.5 and
+             (not near or math.abs(r[k]) < math.abs(near[k])) then near = r end
+        end
+        w("  (within 1.5 times that time: %s at %d cells: %.3g in %.3g s)", near.scheme, near.cells,
+          math.abs(near[k]), near.seconds)
       end
     end
   end

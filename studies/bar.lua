@@ -30,6 +30,8 @@ local case = {
   extra = {"T_measured", "dE"},
   grid = {cells = {8, 16, 32, 64, 128}, shape = {"linear", "gimp", "bspline2"},
           transfer = {"flip", "apic"}, flip = {1, 0}},
+  -- the report's setting: 8 cells across, linear hats, FLIP, MUSL
+  baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
   run = function(s, clock)
     local h = L / s.cells
     local sim = mvmpm.sim {domain = {x = {-4 * h, L + 4 * h}, y = {0, 4 * h}}, cell = h, ppc = s.ppc,

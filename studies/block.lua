@@ -35,6 +35,8 @@ local case = {
     if s.update == "usl" then return s.transfer ~= "flip" or s.flip ~= 1 or s.shape ~= "linear" end
     return s.flip == 0 and s.shape ~= "linear"
   end,
+  -- the report's setting: 8 cells across, linear hats, FLIP, MUSL
+  baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
   run = function(s, clock)
     local h = side / s.cells
     local sim = mvmpm.sim {domain = {x = {0, 3}, y = {0, 2}}, cell = h, ppc = s.ppc,

@@ -32,6 +32,8 @@ local case = {
   extra = {"dL", "omega_mean", "dE"},
   grid = {cells = {8, 12, 16, 24, 32, 48}, shape = {"linear", "gimp", "bspline2"},
           transfer = {"flip", "apic"}, flip = {1, 0}},
+  -- the report's setting: 8 cells across, linear hats, FLIP, MUSL
+  baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
   run = function(s, clock)
     local h = 1 / s.cells
     local sim = mvmpm.sim {domain = {x = {0, 2}, y = {0, 2}}, cell = h, ppc = s.ppc,

@@ -73,7 +73,7 @@ figures: $(BIN)
 STUDIES = bar bar_ppc_cfl disc block concentric bounce_friction bounce
 study: $(BIN)
 	@mkdir -p out/study docs/figures
-	@for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log
+	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
 
 .PHONY: all deps unit test bench clean check-paraview figures study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)

@@ -6,6 +6,8 @@
 #   make bench     speed figures (rates and ratios), never part of the tests
 #   make figures   the documentation's figures (docs/figures/*.png)
 #   make pbx-scale the PBX grain bed's cost against its grain count (a few minutes)
+#   make study     what accuracy costs in time: studies/*.lua, CSVs in out/study,
+#                  plots in docs/figures/accuracy_*.png (docs/accuracy.md)
 #   make check-paraview  ParaView's pvbatch opens a run's XDMF (needs Debian's paraview)
 
 DEB_PACKAGES = build-essential pkg-config liblua5.4-dev libhdf5-dev hdf5-tools \
@@ -100,7 +102,15 @@ hard: $(BIN)
 figures: $(BIN)
 	./$(BIN) test docs/figures/fig5.lua
 
-.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale fuzz random
+# the accuracy-cost study (docs/accuracy.md): each case over its grid of
+# settings, one after the other (timings are taken one run at a time);
+# STUDY_QUICK=1 for a smoke run, STUDY_REPEATS=R for the repeats (default 3)
+STUDIES = bar bar_ppc_cfl disc block concentric bounce_friction bounce
+study: $(BIN)
+	@mkdir -p out/study docs/figures
+	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
+
+.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale fuzz random study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

@@ -136,7 +136,12 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
     } else if (g->periodic[d]) {
       i0[d] = (int)floor(a);
       i1[d] = (int)ceil(b);
-      if (i1[d] - i0[d] > N[d]) i1[d] = i0[d] + N[d];
+      /* a shape spanning the whole period: one period from its first
+      ** lattice point (from i0 the window lost the last row) */
+      if (i1[d] - i0[d] > N[d]) {
+        i0[d] = (int)ceil((sh->lo[d] - g->lo[d]) / hp - 0.5);
+        i1[d] = i0[d] + N[d];
+      }
     } else {
       i0[d] = a < 0 ? 0 : a > N[d] ? N[d] : (int)a;
       i1[d] = b > N[d] ? N[d] : b < 0 ? 0 : (int)b;

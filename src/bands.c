@@ -49,6 +49,7 @@ void bands_plan(bands *b, par *p, const grid *g, int kind, const double *y,
   int nb = par_threads(p), t, r;
   reach_job j;
   b->nb = 0;
+  b->plans++;
   if (nb < 2 || n < (size_t)nb * BANDS_MIN) return;
   for (t = 0; t <= nb; t++) b->i[t] = n * (size_t)t / (size_t)nb;
   j.b = b;
@@ -68,4 +69,5 @@ void bands_plan(bands *b, par *p, const grid *g, int kind, const double *y,
     }
   }
   b->nb = nb;
+  b->split++;
 }

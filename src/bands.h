@@ -36,6 +36,7 @@ typedef struct bands {
   int32_t *first;       /* per node row: the first part that reaches it */
   unsigned char *count; /* per node row: the parts that reach it */
   int nrows;
+  long plans, split;    /* plans made, and those in two passes */
 } bands;
 
 /* room for a grid of nrows node rows; 0 or -1 (out of memory) */

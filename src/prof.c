@@ -59,8 +59,12 @@ void prof_effects(FILE *f, const sim *s) {
   fprintf(f, "  %-22s %s, %s, %d particles per cell, flip %g\n", "scheme",
           s->update == UPDATE_MUSL ? "MUSL" : "USL", shape_names[s->shape],
           s->ppc, s->flip);
-  fprintf(f, "  %-22s %d (results do not depend on it)\n", "threads",
+  fprintf(f, "  %-22s %d (results do not depend on it)", "threads",
           par_threads(s->par));
+  if (s->bands.plans && par_threads(s->par) > 1)
+    fprintf(f, "; scatter in parallel passes in %ld of %ld steps",
+            s->bands.split, s->bands.plans);
+  fprintf(f, "\n");
 }
 
 void prof_report(FILE *f, const sim *s) {

@@ -563,8 +563,10 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "threads") == 0) lua_pushinteger(L, s->threads);
   else if (strcmp(k, "shared_nodes") == 0) lua_pushinteger(L, (lua_Integer)s->g.nshared);
   else if (strcmp(k, "memory") == 0) { /* bytes allocated, by owner */
-    lua_createtable(L, 0, 3);
+    lua_createtable(L, 0, 4);
     setnum(L, "particles", (double)particles_mem(&s->ps));
+    setnum(L, "threads", (double)(s->redcap + s->bands.nrows *
+                                  (sizeof *s->bands.first + 1)));
     setnum(L, "capacity", (double)s->ps.cap);
     setnum(L, "grid", (double)grid_mem(&s->g));
   }

@@ -3,6 +3,7 @@
 #   make           build ./mvmpm
 #   make test      C unit tests, the REPL in tmux, Lua verification; ends "N passed, M failed"
 #   make test SAN=1  the same under AddressSanitizer/UndefinedBehaviorSanitizer
+#   make test TSAN=1 the same under ThreadSanitizer (MVMPM_THREADS=2 for every run)
 #   make bench     speed figures (rates and ratios), never part of the tests
 #   make figures   the documentation's figures (docs/figures/*.png)
 #   make pbx-scale the PBX grain bed's cost against its grain count (a few minutes)
@@ -18,6 +19,10 @@ OPT    = -O3 -march=native
 ifeq ($(SAN),1)
 BUILD  = build-san
 OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
+BIN    = $(BUILD)/mvmpm
+else ifeq ($(TSAN),1)
+BUILD  = build-tsan
+OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=thread
 BIN    = $(BUILD)/mvmpm
 else
 BUILD  = build
@@ -65,7 +70,7 @@ pbx-scale: $(BIN)
 	@for s in $(PBX_SIDES); do PBX_SIDE=$$s ./$(BIN) test bench/pbx_scale.lua | grep '^pbx'; done
 
 clean:
-	rm -rf build build-san mvmpm
+	rm -rf build build-san build-tsan mvmpm
 
 # the hard-case suite (not yet part of make test: see tests/hard/README)
 hard: $(BIN)

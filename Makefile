@@ -3,6 +3,7 @@
 #   make           build ./mvmpm
 #   make test      C unit tests, the REPL in tmux, Lua verification; ends "N passed, M failed"
 #   make test SAN=1  the same under AddressSanitizer/UndefinedBehaviorSanitizer
+#   make test TSAN=1 the same under ThreadSanitizer (MVMPM_THREADS=2 for every run)
 #   make bench     speed figures (rates and ratios), never part of the tests
 #   make figures   the documentation's figures (docs/figures/*.png)
 #   make pbx-scale the PBX grain bed's cost against its grain count (a few minutes)
@@ -27,13 +28,17 @@ else ifeq ($(SAN),1)
 BUILD  = build-san
 OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
 BIN    = $(BUILD)/mvmpm
+else ifeq ($(TSAN),1)
+BUILD  = build-tsan
+OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=thread
+BIN    = $(BUILD)/mvmpm
 else
 BUILD  = build
 BIN    = mvmpm
 endif
-CFLAGS  = -std=c11 -D_POSIX_C_SOURCE=200809L $(WARN) $(OPT) -MMD -MP \
+CFLAGS  = -std=c11 -pthread -D_POSIX_C_SOURCE=200809L $(WARN) $(OPT) -MMD -MP \
           $(shell pkg-config --cflags $(PKGS) 2>/dev/null) $(EXTRA_CFLAGS)
-LDLIBS  = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm
+LDLIBS  = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm -pthread
 
 SRC     = $(wildcard src/*.c)
 OBJ     = $(SRC:src/%.c=$(BUILD)/%.o)
@@ -73,7 +78,7 @@ pbx-scale: $(BIN)
 	@for s in $(PBX_SIDES); do PBX_SIDE=$$s ./$(BIN) test bench/pbx_scale.lua | grep '^pbx'; done
 
 clean:
-	rm -rf build build-san build-fuzz mvmpm
+	rm -rf build build-san build-tsan build-fuzz mvmpm
 
 # the scene loader and Lua API under libFuzzer (clang), ASan and UBSan,
 # seeded with the scenes; FUZZ_SECONDS (default 120) of fuzzing, the run

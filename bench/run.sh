@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# bench/run.sh BIN [--quick] - speed figures of mvmpm on one core (make bench).
+# bench/run.sh BIN [--quick] - speed figures of mvmpm on one core, and
+# with 1 against 2 threads (bench/threads.lua) (make bench).
 #
 # Each bench/*.lua script is a plain Lua script run with `BIN test FILE`
 # (that command runs any Lua file with the mvmpm module loaded and writes
@@ -19,11 +20,12 @@ bin=${1:-./mvmpm}
 [ "${2:-}" = "--quick" ] && export BENCH_QUICK=1
 cd "$(dirname "$0")/.." || exit 1
 echo "mvmpm bench: $("$bin" --version), $(git rev-parse --short HEAD 2>/dev/null || echo '?')," \
-     "$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), one core"
+     "$(grep -m1 'model name' /proc/cpuinfo | sed 's/.*: //'), one core (but (e)):" \
+     "$(nproc) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 if ${CC:-cc} -O2 -o "$tmp/stream" bench/stream.c 2>/dev/null; then "$tmp/stream"; fi
-for f in bench/block.lua bench/disks.lua bench/grains.lua bench/effects.lua; do
+for f in bench/block.lua bench/disks.lua bench/grains.lua bench/effects.lua bench/threads.lua; do
   # keep the figures; drop the test runner's headings and counts
   "$bin" test "$f" | grep -Ev '^(== |-- .*passed|[0-9]+ passed)'
 done

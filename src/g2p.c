@@ -12,12 +12,16 @@
 */
 #include <math.h>
 #include "sim.h"
+#include "bands.h"
+#include "par.h"
 #include "stencil.h"
 
+/* the sums of one chunk of particles (par.h), kept in s->red */
 typedef struct sums {
   double ke, mom[DIM], am, v2max, pe;
   size_t out;
 } sums;
+_Static_assert(sizeof(sums) <= SIM_RED_BYTES, "sums fit SIM_RED_BYTES");
 
 /* the domain as settle needs it, copied into a local like stencil_geo */
 typedef struct box {
@@ -70,29 +74,27 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
 #endif
 }
 
-static void finish(sim *s, const sums *u) {
-  int d;
-  s->e.kinetic = u->ke;
-  s->e.potential = u->pe;
-  for (d = 0; d < DIM; d++) s->e.mom[d] = u->mom[d];
-  s->e.angmom = u->am;
-  s->vmax = sqrt(u->v2max);
-  s->nout = u->out;
-}
+/* what a g2p pass does besides the gather: move the particles (USL),
+** or map their momenta back to the grid at every node row, at the rows
+** of pass 1 of the bands plan, or at none (a second pass does) */
+enum { G2P_MOVE, G2P_SCATTER, G2P_SCATTER1, G2P_GATHER };
 
 /*
 ** USL: velocities, move and gradient in one pass.  MUSL pass 1:
 ** velocities, and at once the particles' updated momenta mapped back to
 ** the grid (into p, which solve_velocity cleared) with the same weights,
 ** so the stencil is evaluated once for both; the sums into p run in the
-** particles' order either way.
+** particles' order either way (bands.h).  Particles [i0, i1), part blk.
 */
 STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
-                             const int full, const int apic) {
+                             const int mode, const int apic, size_t i0,
+                             size_t i1, int blk, sums *u) {
   grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
+  const int full = mode == G2P_MOVE, nw = shape_width(kind);
+  const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
   /* the dense grid only through these: loads need not wait for stores */
   const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
   const double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
@@ -103,10 +105,10 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   const double Dinv = 4.0 * g->inv_h * g->inv_h;
   double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
   double r[DIM][STENCIL_MAX];
+  unsigned char mine[SHAPE_MAXW];
   stencil_geo geo;
   box bx;
   stencil st;
-  sums u = {0};
   size_t i;
   stencil_geo_init(&geo, g);
   box_init(&bx, g, s->gravity);
@@ -114,7 +116,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
     c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
   }
-  for (i = 0; i < ps->n; i++) {
+  for (i = i0; i < i1; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, ax = 0, ay = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     double b00 = 0, b01 = 0, b10 = 0, b11 = 0;
@@ -175,12 +177,16 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       ps->L[2][i] = l10; ps->L[3][i] = l11;
       ps->x[0][i] = x[0] + dt * vx;
       ps->x[1][i] = x[1] + dt * vy;
-      settle(&bx, ps, i, &u);
-    } else {
+      settle(&bx, ps, i, u);
+    } else if (scatter) {
       const double mp = ps->m[i];
+      if (mode == G2P_SCATTER1 &&
+          !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, 1, mine))
+        continue;
       for (k = 0; k < st.n; k++) {
         int32_t n = st.node[k];
         double wm = st.w[k] * mp, ux = nvx, uy = nvy;
+        if (mode == G2P_SCATTER1 && !mine[k / nw]) continue;
         if (apic) {
           ux += b00 * r[0][k] + b01 * r[1][k];
           uy += b10 * r[0][k] + b11 * r[1][k];
@@ -194,28 +200,190 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       }
     }
   }
-  if (full) finish(s, &u);
 }
 
-void g2p(sim *s) {
-  int shared = s->g.nshared > 0, full = s->update == UPDATE_USL;
-  int apic = s->transfer == TRANSFER_APIC;
-#define G2PA(K, SH, FU)                                                  \
-  if (apic) g2p_kind(s, K, SH, FU, 1); else g2p_kind(s, K, SH, FU, 0);
-#define G2P(K)                                                           \
-  if (shared) { if (full) { G2PA(K, 1, 1) } else { G2PA(K, 1, 0) } }     \
-  else { if (full) { G2PA(K, 0, 1) } else { G2PA(K, 0, 0) } }
-  switch (s->shape) {
-  case SHAPE_GIMP: G2P(SHAPE_GIMP); break;
-  case SHAPE_BSPLINE2: G2P(SHAPE_BSPLINE2); break;
-  default: G2P(SHAPE_LINEAR);
+/*
+** MUSL: the momenta of particles [i0, i1) back to the grid, from the
+** velocities (and affine matrices) the gather stored; the same numbers
+** as the scatter in g2p_kind.  split: only the node rows of pass 2 of
+** part blk; otherwise every row.
+*/
+STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
+                                 const int apic, const int split, size_t i0,
+                                 size_t i1, int blk) {
+  grid *g = &s->g;
+  const particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  const double lp = s->lp;
+  const int nw = shape_width(kind);
+  double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
+  double r[DIM][STENCIL_MAX];
+  unsigned char mine[SHAPE_MAXW];
+  stencil_geo geo;
+  stencil st;
+  size_t i;
+  stencil_geo_init(&geo, g);
+  if (apic) {
+    c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
+    c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
   }
-#undef G2P
+  for (i = i0; i < i1; i++) {
+    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
+    const double mp = ps->m[i], nvx = ps->v[0][i], nvy = ps->v[1][i];
+    int32_t f = bd[ps->body[i]].field;
+    int k;
+    if (split &&
+        !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, 2, mine))
+      continue;
+    if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
+    else stencil_eval(&geo, kind, x, lp, &st);
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      double wm = st.w[k] * mp, ux = nvx, uy = nvy;
+      if (split && !mine[k / nw]) continue;
+      if (apic) {
+        ux += c00[i] * r[0][k] + c01[i] * r[1][k];
+        uy += c10[i] * r[0][k] + c11[i] * r[1][k];
+      }
+      gpx[n] += wm * ux;
+      gpy[n] += wm * uy;
+      if (shared && g->head[n] >= 0) {
+        int32_t sl = grid_slot(g, n, f);
+        g->sp[0][sl] += wm * ux;
+        g->sp[1][sl] += wm * uy;
+      }
+    }
+  }
+}
+
+STENCIL_INLINE void g2p_shape(sim *s, const int kind, int mode, size_t i0,
+                              size_t i1, int blk, sums *u) {
+  int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
+#define G2PA(SH, MO)                                                     \
+  if (apic) g2p_kind(s, kind, SH, MO, 1, i0, i1, blk, u);                \
+  else g2p_kind(s, kind, SH, MO, 0, i0, i1, blk, u);
+#define G2PM(SH)                                                         \
+  switch (mode) {                                                        \
+  case G2P_MOVE: G2PA(SH, G2P_MOVE) break;                               \
+  case G2P_SCATTER: G2PA(SH, G2P_SCATTER) break;                         \
+  case G2P_SCATTER1: G2PA(SH, G2P_SCATTER1) break;                       \
+  default: G2PA(SH, G2P_GATHER)                                          \
+  }
+  if (shared) { G2PM(1) } else { G2PM(0) }
+#undef G2PM
 #undef G2PA
 }
 
+static void g2p_range(sim *s, int mode, size_t i0, size_t i1, int blk,
+                      sums *u) {
+  switch (s->shape) {
+  case SHAPE_GIMP: g2p_shape(s, SHAPE_GIMP, mode, i0, i1, blk, u); break;
+  case SHAPE_BSPLINE2:
+    g2p_shape(s, SHAPE_BSPLINE2, mode, i0, i1, blk, u);
+    break;
+  default: g2p_shape(s, SHAPE_LINEAR, mode, i0, i1, blk, u);
+  }
+}
+
+STENCIL_INLINE void scatter_shape(sim *s, const int kind, int split,
+                                  size_t i0, size_t i1, int blk) {
+  int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
+#define SCA(SH, AP)                                                      \
+  if (split) scatter_kind(s, kind, SH, AP, 1, i0, i1, blk);              \
+  else scatter_kind(s, kind, SH, AP, 0, i0, i1, blk);
+  if (shared) { if (apic) { SCA(1, 1) } else { SCA(1, 0) } }
+  else { if (apic) { SCA(0, 1) } else { SCA(0, 0) } }
+#undef SCA
+}
+
+static void scatter_range(sim *s, int split, size_t i0, size_t i1, int blk) {
+  switch (s->shape) {
+  case SHAPE_GIMP: scatter_shape(s, SHAPE_GIMP, split, i0, i1, blk); break;
+  case SHAPE_BSPLINE2:
+    scatter_shape(s, SHAPE_BSPLINE2, split, i0, i1, blk);
+    break;
+  default: scatter_shape(s, SHAPE_LINEAR, split, i0, i1, blk);
+  }
+}
+
+/* the sums of every chunk, added in chunk order: the same for any
+** thread count */
+static void finish(sim *s) {
+  const sums *red = s->red;
+  sums u = {0};
+  size_t c, nc = par_nchunks(s->ps.n);
+  int d;
+  for (c = 0; c < nc; c++) {
+    u.ke += red[c].ke;
+    for (d = 0; d < DIM; d++) u.mom[d] += red[c].mom[d];
+    u.am += red[c].am;
+    u.pe += red[c].pe;
+    u.out += red[c].out;
+    if (red[c].v2max > u.v2max) u.v2max = red[c].v2max;
+  }
+  s->e.kinetic = u.ke;
+  s->e.potential = u.pe;
+  for (d = 0; d < DIM; d++) s->e.mom[d] = u.mom[d];
+  s->e.angmom = u.am;
+  s->vmax = sqrt(u.v2max);
+  s->nout = u.out;
+}
+
+typedef struct g2p_job { sim *s; int mode; } g2p_job;
+
+/* USL: whole chunks, each with its own sums */
+static void move_part(void *arg, int t, int nparts) {
+  g2p_job *j = arg;
+  sums *red = j->s->red;
+  size_t n = j->s->ps.n, c, c0, c1, i0, i1;
+  par_chunks(n, t, nparts, &c0, &c1);
+  for (c = c0; c < c1; c++) {
+    sums z = {0};
+    red[c] = z;
+    par_chunk(n, c, &i0, &i1);
+    g2p_range(j->s, G2P_MOVE, i0, i1, t, &red[c]);
+  }
+}
+
+/* MUSL pass 1 with a plan: part t gathers and maps back at its rows */
+static void split_part(void *arg, int t, int nparts) {
+  g2p_job *j = arg;
+  const bands *b = &j->s->bands;
+  if (j->mode == G2P_SCATTER1)
+    g2p_range(j->s, G2P_SCATTER1, b->i[t], b->i[t + 1], t, NULL);
+  else
+    scatter_range(j->s, 1, b->i[t], b->i[t + 1], t);
+}
+
+/* MUSL pass 1 without a plan: the gather only, cut anywhere */
+static void gather_part(void *arg, int t, int nparts) {
+  g2p_job *j = arg;
+  size_t i0, i1;
+  par_range(j->s->ps.n, t, nparts, &i0, &i1);
+  g2p_range(j->s, G2P_GATHER, i0, i1, t, NULL);
+}
+
+void g2p(sim *s) {
+  g2p_job j = {s, G2P_MOVE};
+  if (s->update == UPDATE_USL) {
+    par_run(s->par, move_part, &j);
+    finish(s);
+  } else if (s->bands.nb) { /* the plan p2g made */
+    j.mode = G2P_SCATTER1;
+    par_run(s->par, split_part, &j);
+    j.mode = G2P_SCATTER;
+    par_run(s->par, split_part, &j);
+  } else if (par_threads(s->par) > 1) {
+    par_run(s->par, gather_part, &j);
+    scatter_range(s, 0, 0, s->ps.n, 0);
+  } else
+    g2p_range(s, G2P_SCATTER, 0, s->ps.n, 0, NULL);
+}
+
 /* MUSL pass 2: gradient from the remapped velocities (in p), move with vL */
-STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
+STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
+                               size_t i0, size_t i1, sums *u) {
   const grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
@@ -225,11 +393,10 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
   stencil_geo geo;
   box bx;
   stencil st;
-  sums u = {0};
   size_t i;
   stencil_geo_init(&geo, g);
   box_init(&bx, g, s->gravity);
-  for (i = 0; i < ps->n; i++) {
+  for (i = i0; i < i1; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     int32_t f = bd[ps->body[i]].field;
@@ -254,23 +421,41 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared) {
     ps->L[2][i] = l10; ps->L[3][i] = l11;
     ps->x[0][i] = x[0] + dt * vx;
     ps->x[1][i] = x[1] + dt * vy;
-    settle(&bx, ps, i, &u);
+    settle(&bx, ps, i, u);
   }
-  finish(s, &u);
 }
 
-void g2p_remap(sim *s) {
+static void remap_range(sim *s, size_t i0, size_t i1, sums *u) {
   int shared = s->g.nshared > 0;
   switch (s->shape) {
   case SHAPE_GIMP:
-    if (shared) remap_kind(s, SHAPE_GIMP, 1); else remap_kind(s, SHAPE_GIMP, 0);
+    if (shared) remap_kind(s, SHAPE_GIMP, 1, i0, i1, u);
+    else remap_kind(s, SHAPE_GIMP, 0, i0, i1, u);
     break;
   case SHAPE_BSPLINE2:
-    if (shared) remap_kind(s, SHAPE_BSPLINE2, 1);
-    else remap_kind(s, SHAPE_BSPLINE2, 0);
+    if (shared) remap_kind(s, SHAPE_BSPLINE2, 1, i0, i1, u);
+    else remap_kind(s, SHAPE_BSPLINE2, 0, i0, i1, u);
     break;
   default:
-    if (shared) remap_kind(s, SHAPE_LINEAR, 1);
-    else remap_kind(s, SHAPE_LINEAR, 0);
+    if (shared) remap_kind(s, SHAPE_LINEAR, 1, i0, i1, u);
+    else remap_kind(s, SHAPE_LINEAR, 0, i0, i1, u);
   }
+}
+
+static void remap_part(void *arg, int t, int nparts) {
+  sim *s = arg;
+  sums *red = s->red;
+  size_t n = s->ps.n, c, c0, c1, i0, i1;
+  par_chunks(n, t, nparts, &c0, &c1);
+  for (c = c0; c < c1; c++) {
+    sums z = {0};
+    red[c] = z;
+    par_chunk(n, c, &i0, &i1);
+    remap_range(s, i0, i1, &red[c]);
+  }
+}
+
+void g2p_remap(sim *s) {
+  par_run(s->par, remap_part, s);
+  finish(s);
 }

@@ -78,16 +78,25 @@ size_t grid_mem(const grid *g) {
   return dense + slot + g->sharedcap * sizeof(int32_t);
 }
 
-void grid_reset(grid *g, int clear_q) {
-  size_t n = g->nnodes * sizeof(double), k;
+void grid_clear(grid *g, size_t i0, size_t i1, int clear_q) {
+  size_t n = (i1 - i0) * sizeof(double);
   int d;
-  memset(g->m, 0, n);
+  memset(g->m + i0, 0, n);
   for (d = 0; d < DIM; d++) {
-    memset(g->p[d], 0, n);
-    memset(g->f[d], 0, n);
-    if (clear_q) memset(g->q[d], 0, n);
+    memset(g->p[d] + i0, 0, n);
+    memset(g->f[d] + i0, 0, n);
+    if (clear_q) memset(g->q[d] + i0, 0, n);
   }
-  memset(g->owner, 0xff, g->nnodes * sizeof(int32_t));
+  memset(g->owner + i0, 0xff, (i1 - i0) * sizeof(int32_t));
+}
+
+void grid_reset(grid *g, int clear_q) {
+  grid_clear(g, 0, g->nnodes, clear_q);
+  grid_reset_slots(g);
+}
+
+void grid_reset_slots(grid *g) {
+  size_t k;
   /* only shared nodes carry slot heads; clear just those */
   for (k = 0; k < g->nshared; k++) g->head[g->shared[k]] = -1;
   g->nshared = 0;

@@ -63,6 +63,10 @@ size_t grid_mem(const grid *g);
 /* clear the dense arrays and the slot table for a new step; q only if
 ** clear_q (the step need not: solve_momentum writes every q) */
 void grid_reset(grid *g, int clear_q);
+/* the same in two parts: the dense arrays of nodes [i0, i1) (threads
+** may clear parts at once), and the slot table */
+void grid_clear(grid *g, size_t i0, size_t i1, int clear_q);
+void grid_reset_slots(grid *g);
 /* the slot of field f at node, creating it; -1 if out of memory */
 int32_t grid_slot_add(grid *g, int32_t node, int32_t field);
 /* the slot of field f at a shared node (must exist) */

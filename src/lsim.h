@@ -61,7 +61,8 @@ typedef struct lbody {
 
 /* lua_sim.c */
 lsim *lsim_check(lua_State *L, int idx);
-int lsim_new(lua_State *L);                 /* mvmpm.sim{...} */
+int lsim_new(lua_State *L);
+int lsim_env_threads(void);                  /* $MVMPM_THREADS or 1 */                 /* mvmpm.sim{...} */
 void lsim_open(lua_State *L);
 void lsim_uv(lua_State *L, int idx, const char *field); /* push uv.field */
 /* lua_body.c */

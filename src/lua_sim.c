@@ -119,10 +119,20 @@ static void newuv(lua_State *L) {
   lua_setiuservalue(L, -2, 1);
 }
 
+/* the default thread count: $MVMPM_THREADS if it is a count, else 1 */
+int lsim_env_threads(void) {
+  const char *e = getenv("MVMPM_THREADS");
+  char *end;
+  long n = e ? strtol(e, &end, 10) : 1;
+  if (!e || end == e || *end || n < 1) return 1;
+  return n > PAR_MAX ? PAR_MAX : (int)n;
+}
+
 int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
-      "contact", "fields", "units", "sort_every", "mass_cutoff", NULL};
+      "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
+      NULL};
   static const char *const updates[] = {"usl", "musl", NULL};
   static const char *const transfers[] = {"flip", "apic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
@@ -250,6 +260,8 @@ int lsim_new(lua_State *L) {
     chk_vec(L, 1, what, "gravity", s->gravity, DIM, 0);
     s->sort_every = (int)chk_num(L, 1, what, "sort_every", 20, 0, 1e9, CHK_INT);
     s->mcut_rel = chk_num(L, 1, what, "mass_cutoff", 1e-9, 0, 1, 0);
+    sim_set_threads(s, (int)chk_num(L, 1, what, "threads", lsim_env_threads(),
+                                    1, PAR_MAX, CHK_INT));
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
     lua_getfield(L, 1, "units");
     snprintf(ls->units, sizeof ls->units, "%s",
@@ -555,10 +567,13 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "cfl") == 0) lua_pushnumber(L, s->cfl);
   else if (strcmp(k, "friction") == 0) lua_pushnumber(L, s->mu_default);
   else if (strcmp(k, "removed") == 0) lua_pushinteger(L, (lua_Integer)s->nremoved);
+  else if (strcmp(k, "threads") == 0) lua_pushinteger(L, s->threads);
   else if (strcmp(k, "shared_nodes") == 0) lua_pushinteger(L, (lua_Integer)s->g.nshared);
   else if (strcmp(k, "memory") == 0) { /* bytes allocated, by owner */
-    lua_createtable(L, 0, 3);
+    lua_createtable(L, 0, 4);
     setnum(L, "particles", (double)particles_mem(&s->ps));
+    setnum(L, "threads", (double)(s->redcap + s->bands.nrows *
+                                  (sizeof *s->bands.first + 1)));
     setnum(L, "capacity", (double)s->ps.cap);
     setnum(L, "grid", (double)grid_mem(&s->g));
   }
@@ -574,10 +589,11 @@ static int lindex(lua_State *L) {
   return 1;
 }
 
-/* settable between steps: flip, cfl, dt (0 = automatic), t_end, friction */
+/* settable between steps: flip, cfl, dt (0 = automatic), t_end, friction,
+** threads */
 static int lnewindex(lua_State *L) {
   static const char *const keys[] = {"flip", "cfl", "dt", "t_end", "friction",
-                                     "progress", NULL};
+                                     "progress", "threads", NULL};
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   const char *k = luaL_checkstring(L, 2);
@@ -592,6 +608,8 @@ static int lnewindex(lua_State *L) {
   else if (strcmp(k, "t_end") == 0) s->t_end = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
   else if (strcmp(k, "friction") == 0) s->mu_default = friction(L, 4, "sim", s->mu_default);
   else if (strcmp(k, "progress") == 0) ls->progress = lua_toboolean(L, 3);
+  else if (strcmp(k, "threads") == 0)
+    sim_set_threads(s, (int)chk_num(L, 4, "sim", k, 1, 1, PAR_MAX, CHK_INT));
   return 0;
 }
 

@@ -17,6 +17,7 @@
 #include "lsim.h"
 #include "lualib.h"
 #include "render_cmd.h"
+#include "prof.h"
 #include "repl.h"
 #include "sandbox.h"
 
@@ -25,7 +26,7 @@ static const char *progname = "mvmpm";
 static void usage(FILE *f) {
   fprintf(f,
 "usage: %s run SCENE.lua [--set name=value ...] [--out DIR] [--quiet]\n"
-"                [--checkpoint-every T] [--sandbox]\n"
+"                [--checkpoint-every T] [--sandbox] [--threads N] [--profile]\n"
 "       %s run --restart CHECKPOINT|DIR [SCENE.lua] [--set ...] [--quiet]\n"
 "                [--checkpoint-every T] [--sandbox]\n"
 "       %s repl [SCENE.lua] [--set name=value ...] [--out DIR]\n"
@@ -51,6 +52,9 @@ static void usage(FILE *f) {
 "--checkpoint-every T  writes DIR/checkpoint_NNNNNN.h5 every T of simulated\n"
 "       time (the newest two are kept); --restart continues one bit for bit\n"
 "       (DIR: its newest), in its directory, with the same --set values\n"
+"--threads N  steps with N threads (default: the scene's sim{threads = N},\n"
+"       else $MVMPM_THREADS, else 1); the results are the same bit for bit\n"
+"--profile  prints the effects the step runs and the wall time per phase\n"
 "--sandbox  the scene gets no io, os (but clock/time/date), debug, package,\n"
 "       dofile/loadfile or bytecode, and writes only inside DIR\n"
 "exit status: 0 done, 1 error, 2 usage, 130 stopped by Ctrl-C (a checkpoint\n"
@@ -79,6 +83,8 @@ static int fail(lua_State *L, const char *what) {
 typedef struct runopts {
   const char *scene, *out, *restart;
   int quiet, sandbox, nset;
+  int threads;             /* 0: not given (the scene's, or $MVMPM_THREADS) */
+  int profile;             /* print the effects and the time per phase */
   double ck_every;         /* < 0: not given */
 } runopts;
 
@@ -113,6 +119,17 @@ static int options(lua_State *L, int argc, char **argv, int i, runopts *o,
         return -1;
       }
       o->restart = argv[++i];
+    } else if (run && strcmp(argv[i], "--threads") == 0) {
+      char *end = NULL;
+      long n = i + 1 < argc ? strtol(argv[++i], &end, 10) : 0;
+      if (!end || *end || n < 1 || n > PAR_MAX) {
+        fprintf(stderr, "%s: --threads needs a count from 1 to %d\n", progname,
+                PAR_MAX);
+        return -1;
+      }
+      o->threads = (int)n;
+    } else if (run && strcmp(argv[i], "--profile") == 0) {
+      o->profile = 1;
     } else if (run && strcmp(argv[i], "--checkpoint-every") == 0) {
       char *end = NULL;
       if (i + 1 < argc) o->ck_every = strtod(argv[++i], &end);
@@ -234,6 +251,21 @@ static int restart_same_scene(lua_State *L, const ckpt *c, const char *scene) {
   return same ? 0 : -1;
 }
 
+/* --profile: what the engine does each step, and where the time went */
+static void profile(const lsim *ls) {
+  prof_effects(stdout, &ls->s);
+  printf("per step, outside the engine:\n");
+  printf("  %-22s %s", "CSV row", ls->csv_open && ls->csv_every > 0 ? "" : "no\n");
+  if (ls->csv_open && ls->csv_every > 0)
+    printf("every %ld step(s)\n", ls->csv_every);
+  printf("  %-22s %d\n", "callbacks (sim:every)", ls->nevery);
+  printf("  %-22s %s\n", "drives as functions",
+         ls->drives || ls->sidefns || ls->tempfn ? "yes" : "no");
+  printf("  %-22s %d written\n", "snapshots", ls->nsnap);
+  printf("  %-22s %d written\n", "checkpoints", ls->ck_count);
+  prof_report(stdout, &ls->s);
+}
+
 static int cmd_run(int argc, char **argv) {
   runopts o;
   int rc;
@@ -291,6 +323,14 @@ static int cmd_run(int argc, char **argv) {
   if (o.ck_every > 0) ls->ck_every = o.ck_every;
   ls->ck_on_interrupt = 1;
   ls->progress = !o.quiet;
+  if (o.threads) sim_set_threads(&ls->s, o.threads);
+  if (o.profile && !(ls->s.prof = calloc(1, sizeof *ls->s.prof))) {
+    fprintf(stderr, "%s: out of memory\n", progname);
+    lua_close(L);
+    free(stored_scene);
+    return 1;
+  }
+  if (ls->s.prof) ls->s.prof->last = prof_clock();
   lua_setglobal(L, "sim");
   w0 = now();
   /* no Lua hook: Ctrl-C stops the run at the next step boundary, where a
@@ -344,6 +384,7 @@ static int cmd_run(int argc, char **argv) {
     printf("output: %s/ (particles.xmf, %d snapshots, diagnostics.csv)\n",
            ls->outdir, ls->nsnap);
   }
+  if (o.profile) profile(ls);
   lua_close(L);
   free(stored_scene);
   return rc ? 1 : 0;

@@ -8,11 +8,12 @@
 static int setup(material *m, particles *ps) { return 0; }
 
 static void update(const material *m, particles *ps, const int32_t *bmat,
-                   int32_t id, double dt, mat_sums *sum) {
+                   int32_t id, double dt, size_t i0, size_t i1,
+                   mat_sums *sum) {
   const double lam = m->lambda, g2 = 2.0 * m->G, K = m->K, G = m->G;
   double s[NSTRESS], D[NSTRESS], strain = 0, power = 0;
   size_t i;
-  for (i = 0; i < ps->n; i++) {
+  for (i = i0; i < i1; i++) {
     double J, tr;
     if (bmat[ps->body[i]] != id) continue;
     mat_get(ps, i, s);

@@ -33,14 +33,15 @@ static int setup(material *m, particles *ps) {
 }
 
 static void update(const material *m, particles *ps, const int32_t *bmat,
-                   int32_t id, double dt, mat_sums *sum) {
+                   int32_t id, double dt, size_t i0, size_t i1,
+                   mat_sums *sum) {
   const double lam = m->lambda, g2 = 2.0 * m->G, K = m->K, G = m->G;
   const double y0 = m->yield, H = m->hardening, g3h = 3.0 * G + H;
   double *ep = particles_comp(ps, m->field[F_EP], 0);
   double *wp = particles_comp(ps, m->field[F_WP], 0);
   double s[NSTRESS], D[NSTRESS], d[NSTRESS], strain = 0, power = 0, plastic = 0;
   size_t i;
-  for (i = 0; i < ps->n; i++) {
+  for (i = i0; i < i1; i++) {
     double J, tr, p, q, qy;
     if (bmat[ps->body[i]] != id) continue;
     mat_get(ps, i, s);

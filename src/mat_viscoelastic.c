@@ -63,7 +63,8 @@ static inline double ddot(const double *a, const double *b) {
 }
 
 static void update(const material *m, particles *ps, const int32_t *bmat,
-                   int32_t id, double dt, mat_sums *sum) {
+                   int32_t id, double dt, size_t i0, size_t i1,
+                   mat_sums *sum) {
   const int n = m->nprony;
   const double K = m->K, g2 = 2.0 * m->G_inf;
   double e[MAT_MAXPRONY], B[MAT_MAXPRONY], k1[MAT_MAXPRONY], k2[MAT_MAXPRONY],
@@ -88,7 +89,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     k3[k] = 2.0 * G * tau * tau * f;
     for (c = 0; c < 3; c++) a[k][c] = particles_comp(ps, m->field[k], c);
   }
-  for (i = 0; i < ps->n; i++) {
+  for (i = i0; i < i1; i++) {
     double J, tr, cs, sn, dd, w = 0, en;
     if (bmat[ps->body[i]] != id) continue;
     mat_get(ps, i, s);

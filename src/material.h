@@ -39,9 +39,10 @@ typedef struct mat_model {
   const char *name;
   /* register per-particle state fields; 0 or -1 */
   int (*setup)(material *m, particles *ps);
-  /* update the particles whose body uses material id (bmat[body] == id) */
+  /* update the particles i0 .. i1 - 1 whose body uses material id
+  ** (bmat[body] == id), adding to sum (threads update disjoint ranges) */
   void (*update)(const material *m, particles *ps, const int32_t *bmat,
-                 int32_t id, double dt, mat_sums *sum);
+                 int32_t id, double dt, size_t i0, size_t i1, mat_sums *sum);
   /* stored energy of particle i (for diagnostics of one body) */
   double (*energy)(const material *m, const particles *ps, size_t i);
 } mat_model;

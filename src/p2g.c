@@ -7,6 +7,8 @@
 ** gradient sum_p m_p grad S_ip that gives the contact normals.
 */
 #include "sim.h"
+#include "bands.h"
+#include "par.h"
 #include "stencil.h"
 
 /* Shared nodes: a node is shared when particles of two fields reach it.
@@ -39,18 +41,25 @@ int p2g_mark(sim *s) {
   return 0;
 }
 
+/*
+** The scatter of particles [i0, i1) (part blk of the bands plan).
+** split: only the node rows this pass writes (bands.h); otherwise all.
+*/
 STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
-                             const int apic) {
+                             const int apic, const int split, size_t i0,
+                             size_t i1, int blk, int pass) {
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double gx = s->gravity[0], gy = s->gravity[1], lp = s->lp;
+  const int nw = shape_width(kind);
   /* distinct arrays: restrict lets the compiler keep loads ahead of
   ** stores to the other arrays */
   double *restrict gm = g->m, *restrict gpx = g->p[0], *restrict gpy = g->p[1];
   double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
   const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
   double r[DIM][STENCIL_MAX];
+  unsigned char mine[SHAPE_MAXW];
   stencil_geo geo;
   stencil st;
   size_t i;
@@ -59,7 +68,7 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
     c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
   }
-  for (i = 0; i < ps->n; i++) {
+  for (i = i0; i < i1; i++) {
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double mp = ps->m[i], vx0 = ps->v[0][i], vy0 = ps->v[1][i];
     double J = ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
@@ -68,12 +77,16 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     double sxy = V * ps->s[S_XY][i];
     int32_t f = bd[ps->body[i]].field;
     int k;
+    if (split &&
+        !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
+      continue;
     if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
     else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k];
       double wm = w * mp, vx = vx0, vy = vy0;
+      if (split && !mine[k / nw]) continue;
       if (apic) { /* the particle's affine velocity at the node */
         vx += c00[i] * r[0][k] + c01[i] * r[1][k];
         vy += c10[i] * r[0][k] + c11[i] * r[1][k];
@@ -99,15 +112,49 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   }
 }
 
-void p2g(sim *s) {
+STENCIL_INLINE void p2g_split(sim *s, const int kind, const int split,
+                              size_t i0, size_t i1, int blk, int pass) {
   int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
+  if (shared) {
+    if (apic) p2g_kind(s, kind, 1, 1, split, i0, i1, blk, pass);
+    else p2g_kind(s, kind, 1, 0, split, i0, i1, blk, pass);
+  } else {
+    if (apic) p2g_kind(s, kind, 0, 1, split, i0, i1, blk, pass);
+    else p2g_kind(s, kind, 0, 0, split, i0, i1, blk, pass);
+  }
+}
+
+static void p2g_range(sim *s, int split, size_t i0, size_t i1, int blk,
+                      int pass) {
 #define P2G(K)                                                         \
-  if (shared) { if (apic) p2g_kind(s, K, 1, 1); else p2g_kind(s, K, 1, 0); } \
-  else { if (apic) p2g_kind(s, K, 0, 1); else p2g_kind(s, K, 0, 0); }
+  if (split) p2g_split(s, K, 1, i0, i1, blk, pass);                    \
+  else p2g_split(s, K, 0, i0, i1, blk, pass);
   switch (s->shape) {
   case SHAPE_GIMP: P2G(SHAPE_GIMP); break;
   case SHAPE_BSPLINE2: P2G(SHAPE_BSPLINE2); break;
   default: P2G(SHAPE_LINEAR);
   }
 #undef P2G
+}
+
+typedef struct pass_job { sim *s; int pass; } pass_job;
+
+static void p2g_part(void *arg, int t, int nparts) {
+  pass_job *j = arg;
+  const bands *b = &j->s->bands;
+  p2g_range(j->s, 1, b->i[t], b->i[t + 1], t, j->pass);
+}
+
+/* the plan is made here, from the positions the step starts with, and
+** serves the MUSL scatter of g2p too (the particles have not moved) */
+void p2g(sim *s) {
+  bands *b = &s->bands;
+  bands_plan(b, s->par, &s->g, s->shape, s->ps.x[BANDS_DIM], s->ps.n);
+  if (b->nb) {
+    pass_job j = {s, 1};
+    par_run(s->par, p2g_part, &j);
+    j.pass = 2;
+    par_run(s->par, p2g_part, &j);
+  } else
+    p2g_range(s, 0, 0, s->ps.n, 0, 1);
 }

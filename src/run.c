@@ -17,6 +17,7 @@
 #include "lcheck.h"
 #include "lsim.h"
 #include "out_h5.h"
+#include "prof.h"
 
 static double now(void) {
   struct timespec ts;
@@ -263,6 +264,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   simidx = lua_absindex(L, simidx);
   if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
   out_start(L, ls);
+  prof_start(s->prof);
   /* t_end = HUGE_VAL (sim:step) would make the tolerance inf - inf = NaN */
   while ((max_steps < 0 || k < max_steps) &&
          (isinf(t_end) || s->t < t_end - 1e-12 * (1 + fabs(t_end)))) {
@@ -272,10 +274,12 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     if (ls->drives || ls->sidefns) drives(L, simidx, ls);
     /* the temperature at the end of the coming step */
     if (ls->tempfn) s->temp = lsim_temperature_at(L, simidx, s->t + sim_next_dt(s));
+    prof_mark(s->prof, PROF_DIAG);
     if (sim_step(s)) luaL_error(L, "%s", s->err);
     k++;
     if (ls->csv_open && ls->csv_every > 0 && s->step % ls->csv_every == 0) csv_row(L, ls);
     if (ls->nevery) callbacks(L, simidx, ls);
+    prof_mark(s->prof, PROF_DIAG);
     if (ls->csv_open && ls->out_every > 0 && s->t >= ls->out_next - 1e-9 * ls->out_every) {
       snapshot(L, ls);
       while (ls->out_next <= s->t + 1e-9 * ls->out_every) ls->out_next += ls->out_every;
@@ -287,6 +291,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
       ckpt_write(L, simidx);
     }
     if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 0);
+    prof_mark(s->prof, PROF_OUTPUT);
     if (interrupt_pending()) {
       interrupt_clear();
       if (show) progress(ls, t_end, t0, wall0, step0, 1);

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "prof.h"
 #include "shape.h"
 #include "sim.h"
 #include "thermal.h"
@@ -29,8 +30,10 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->ppc = ppc;
   s->lp = 0.5 / ppc;
   s->ftemp = -1;
+  s->threads = 1;
   particles_init(&s->ps);
-  if (grid_init(&s->g, lo, hi, h, periodic, shape_pad(shape))) {
+  if (grid_init(&s->g, lo, hi, h, periodic, shape_pad(shape)) ||
+      bands_init(&s->bands, s->g.n[BANDS_DIM])) {
     snprintf(s->err, sizeof s->err, "out of memory for the grid");
     return -1;
   }
@@ -55,7 +58,43 @@ void sim_free(sim *s) {
   free(s->fdriven);
   free(s->laws);
   free(s->flaw);
+  par_free(s->par);
+  bands_free(&s->bands);
+  free(s->red);
+  free(s->prof);
   memset(s, 0, sizeof *s);
+}
+
+void sim_set_threads(sim *s, int n) {
+  if (n < 1) n = 1;
+  if (n > PAR_MAX) n = PAR_MAX;
+  if (n == s->threads && s->par) return;
+  par_free(s->par);
+  s->par = NULL;
+  s->threads = n;
+}
+
+/* the pool, and room for the partial sums of every chunk of particles:
+** made at the first step and grown (doubling) only if particles were
+** added since, so steps do not allocate */
+int sim_prepare(sim *s) {
+  size_t need = par_nchunks(s->ps.n) * SIM_RED_BYTES;
+  if (!s->par && !(s->par = par_new(s->threads))) {
+    snprintf(s->err, sizeof s->err, "cannot start %d threads", s->threads);
+    return -1;
+  }
+  if (need > s->redcap) {
+    size_t cap = s->redcap ? 2 * s->redcap : SIM_RED_BYTES * 64;
+    void *r;
+    while (cap < need) cap *= 2;
+    if (!(r = realloc(s->red, cap))) {
+      snprintf(s->err, sizeof s->err, "out of memory for partial sums");
+      return -1;
+    }
+    s->red = r;
+    s->redcap = cap;
+  }
+  return 0;
 }
 
 int sim_add_material(sim *s, const material *m) {
@@ -247,11 +286,41 @@ double sim_residual(const sim *s) {
          e->viscous - sim_total(s);
 }
 
+/* each material's update over whole chunks of particles, the sums kept
+** per chunk */
+static void constitutive_part(void *arg, int t, int nparts) {
+  sim *s = arg;
+  mat_sums *red = s->red;
+  size_t n = s->ps.n, c, c0, c1, i0, i1;
+  int k;
+  par_chunks(n, t, nparts, &c0, &c1);
+  for (c = c0; c < c1; c++) {
+    mat_sums z = {0, 0, 1e300, -1e300, 0, 0, 0};
+    red[c] = z;
+    par_chunk(n, c, &i0, &i1);
+    for (k = 0; k < s->nmat; k++)
+      s->mats[k].model->update(&s->mats[k], &s->ps, s->bmat, k, s->dt, i0,
+                               i1, &red[c]);
+  }
+}
+
+_Static_assert(sizeof(mat_sums) <= SIM_RED_BYTES, "mat_sums fit SIM_RED_BYTES");
+
 int constitutive(sim *s) {
   mat_sums sum = {0, 0, 1e300, -1e300, 0, 0, 0};
-  int k;
-  for (k = 0; k < s->nmat; k++)
-    s->mats[k].model->update(&s->mats[k], &s->ps, s->bmat, k, s->dt, &sum);
+  const mat_sums *red = s->red;
+  size_t c, nc = par_nchunks(s->ps.n);
+  par_run(s->par, constitutive_part, s);
+  /* in chunk order: the same for any thread count */
+  for (c = 0; c < nc; c++) {
+    sum.strain += red[c].strain;
+    sum.power += red[c].power;
+    sum.plastic += red[c].plastic;
+    sum.viscous += red[c].viscous;
+    sum.nbadj += red[c].nbadj;
+    if (red[c].jmin < sum.jmin) sum.jmin = red[c].jmin;
+    if (red[c].jmax > sum.jmax) sum.jmax = red[c].jmax;
+  }
   s->e.strain = sum.strain;
   s->e.plastic += sum.plastic;
   s->e.viscous += sum.viscous;
@@ -311,8 +380,16 @@ static void forces_clear(sim *s) {
         for (d = 0; d < DIM; d++) s->bodies[k].force[d] = 0;
 }
 
+static void reset_part(void *arg, int t, int nparts) {
+  grid *g = arg;
+  size_t i0, i1;
+  par_range(g->nnodes, t, nparts, &i0, &i1);
+  grid_clear(g, i0, i1, 0);
+}
+
 int sim_step(sim *s) {
   int musl = s->update == UPDATE_MUSL;
+  if (sim_prepare(s)) return -1;
   if (!s->started) {
     /* once, at the first step: bodies are all added */
     if (s->ftemp >= 0) thermal_prestress(s);
@@ -321,13 +398,17 @@ int sim_step(sim *s) {
     s->started = 1;
   }
   s->dt = sim_next_dt(s);
-  grid_reset(&s->g, 0);
+  prof_mark(s->prof, PROF_HOUSE);
+  par_run(s->par, reset_part, &s->g);
+  grid_reset_slots(&s->g);
   if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
   }
   p2g(s);
+  prof_mark(s->prof, PROF_P2G);
   solve_momentum(s);
+  prof_mark(s->prof, PROF_SOLVE);
   if (s->g.nshared) contact_normals(s);
   if (s->gap_check) reach(s);
   forces_clear(s);
@@ -337,9 +418,13 @@ int sim_step(sim *s) {
     bond_scatter(s);
     s->ncut_total += s->ncut;
   }
+  prof_mark(s->prof, PROF_CONTACT);
   boundary_apply(s);
+  prof_mark(s->prof, PROF_SIDES);
   solve_velocity(s);
+  prof_mark(s->prof, PROF_SOLVE);
   g2p(s);
+  prof_mark(s->prof, PROF_G2P);
   if (musl) {
     /* the remap is not constrained again: the velocity gradient follows
     ** what the particles do; a second wall or contact projection here
@@ -348,11 +433,15 @@ int sim_step(sim *s) {
     solve_remap(s); /* g2p mapped the updated momenta back */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
+    prof_mark(s->prof, PROF_REMAP);
   }
   if (s->temp_on) thermal(s);
   if (constitutive(s)) return -1;
+  prof_mark(s->prof, PROF_CONST);
   s->t += s->dt;
   s->step++;
   housekeeping(s);
+  if (s->prof) s->prof->steps++;
+  prof_mark(s->prof, PROF_HOUSE);
   return 0;
 }

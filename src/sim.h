@@ -11,10 +11,12 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "bands.h"
 #include "dim.h"
 #include "grid.h"
 #include "material.h"
 #include "particles.h"
+#include "par.h"
 
 enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
 enum update_kind { UPDATE_USL, UPDATE_MUSL };
@@ -112,13 +114,26 @@ typedef struct sim {
   size_t nout;       /* particles outside the domain after the last move */
   double mcut_rel;   /* mcut as a fraction of the lightest particle */
   int started;
+  /* threads (par.h): the pool is made at the first step, or the first
+  ** after sim_set_threads; results do not depend on the count */
+  int threads;
+  par *par;
+  bands bands;       /* the plan of this step's scatters (bands.h) */
+  void *red;         /* per-chunk partial sums of the threaded phases */
+  size_t redcap;     /* ... its bytes */
+  struct sim_prof *prof; /* time per phase, when profiling (prof.h) */
   char err[256];
 } sim;
+
+/* bytes of partial sums per chunk of particles (par.h) a phase may use */
+#define SIM_RED_BYTES 128
 
 /* defaults: MUSL, flip 1.0, cfl 0.25; 0 or -1 */
 int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
              const int periodic[DIM], int shape, int ppc);
 void sim_free(sim *s);
+/* the threads the steps use (>= 1; the pool is made at the next step) */
+void sim_set_threads(sim *s, int n);
 /* materials and bodies; index or -1 with s->err set */
 int sim_add_material(sim *s, const material *m);
 int sim_add_body(sim *s, const char *name, int32_t mat, int32_t field);
@@ -140,6 +155,10 @@ long sim_add_particle(sim *s, int32_t b, const double x[DIM],
 ** of the budget and the first dt; the first step calls it, and anything
 ** that reports the state before then may (bodies can still be added) */
 void sim_begin(sim *s);
+/* the thread pool and the buffers of the threaded phases, made or grown
+** if need be; sim_step calls it first, as must code that calls the
+** phases below itself.  0, or -1 with s->err */
+int sim_prepare(sim *s);
 /* one explicit step; 0, or -1 with s->err (e.g. det F <= 0) */
 int sim_step(sim *s);
 /* the step the CFL rule gives now */

@@ -9,28 +9,42 @@
 ** of a body cannot turn a finite force into a huge velocity.
 */
 #include <string.h>
+#include "par.h"
 #include "sim.h"
 
-void solve_momentum(sim *s) {
-  grid *g = &s->g;
-  const double dt = s->dt;
+/* Every loop here is node by node: the threads take parts of the node
+** and slot ranges, and the numbers cannot depend on how many. */
+
+static void momentum(size_t i0, size_t i1, double dt, double *const q[DIM],
+                     double *const p[DIM], double *const f[DIM]) {
   size_t i;
   int d;
   for (d = 0; d < DIM; d++) {
-    double *q = g->q[d];
-    const double *p = g->p[d], *f = g->f[d];
-    for (i = 0; i < g->nnodes; i++) q[i] = p[i] + dt * f[i];
-    for (i = 0; i < g->nslot; i++) g->sq[d][i] = g->sp[d][i] + dt * g->sf[d][i];
+    double *restrict qd = q[d];
+    const double *pd = p[d], *fd = f[d];
+    for (i = i0; i < i1; i++) qd[i] = pd[i] + dt * fd[i];
   }
 }
 
-/* q -> vL, f -> dv, for n entries of one field table */
-static void velocity(size_t n, const double *m, double *const p[DIM],
+static void momentum_part(void *arg, int t, int nparts) {
+  sim *s = arg;
+  grid *g = &s->g;
+  size_t i0, i1;
+  par_range(g->nnodes, t, nparts, &i0, &i1);
+  momentum(i0, i1, s->dt, g->q, g->p, g->f);
+  par_range(g->nslot, t, nparts, &i0, &i1);
+  momentum(i0, i1, s->dt, g->sq, g->sp, g->sf);
+}
+
+void solve_momentum(sim *s) { par_run(s->par, momentum_part, s); }
+
+/* q -> vL, f -> dv, for entries [i0, i1) of one field table */
+static void velocity(size_t i0, size_t i1, const double *m, double *const p[DIM],
                      double *const q[DIM], double *const f[DIM], double mcut,
                      int clearp) {
   size_t i;
   int d;
-  for (i = 0; i < n; i++) {
+  for (i = i0; i < i1; i++) {
     double mi = m[i];
     if (mi > mcut) {
       double inv = 1.0 / mi;
@@ -51,24 +65,35 @@ static void velocity(size_t n, const double *m, double *const p[DIM],
   }
 }
 
-void solve_velocity(sim *s) {
+static void velocity_part(void *arg, int t, int nparts) {
+  sim *s = arg;
   grid *g = &s->g;
   int musl = s->update == UPDATE_MUSL;
-  velocity(g->nnodes, g->m, g->p, g->q, g->f, s->mcut, musl);
-  velocity(g->nslot, g->sm, g->sp, g->sq, g->sf, s->mcut, musl);
+  size_t i0, i1;
+  par_range(g->nnodes, t, nparts, &i0, &i1);
+  velocity(i0, i1, g->m, g->p, g->q, g->f, s->mcut, musl);
+  par_range(g->nslot, t, nparts, &i0, &i1);
+  velocity(i0, i1, g->sm, g->sp, g->sq, g->sf, s->mcut, musl);
 }
 
-static void remap(size_t n, const double *m, double *const p[DIM]) {
+void solve_velocity(sim *s) { par_run(s->par, velocity_part, s); }
+
+static void remap(size_t i0, size_t i1, const double *m, double *const p[DIM]) {
   size_t i;
   int d;
-  for (i = 0; i < n; i++) {
+  for (i = i0; i < i1; i++) {
     double inv = m[i] > 0 ? 1.0 / m[i] : 0.0;
     for (d = 0; d < DIM; d++) p[d][i] *= inv;
   }
 }
 
-void solve_remap(sim *s) {
-  grid *g = &s->g;
-  remap(g->nnodes, g->m, g->p);
-  remap(g->nslot, g->sm, g->sp);
+static void remap_part(void *arg, int t, int nparts) {
+  grid *g = arg;
+  size_t i0, i1;
+  par_range(g->nnodes, t, nparts, &i0, &i1);
+  remap(i0, i1, g->m, g->p);
+  par_range(g->nslot, t, nparts, &i0, &i1);
+  remap(i0, i1, g->sm, g->sp);
 }
+
+void solve_remap(sim *s) { par_run(s->par, remap_part, &s->g); }

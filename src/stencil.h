@@ -57,6 +57,16 @@ STENCIL_INLINE int stencil_wrap(const stencil_geo *geo, int d, int i) {
   return i;
 }
 
+/* the first node along d of the stencil at coordinate x, unwrapped:
+** what shape_eval returns, without the weights */
+STENCIL_INLINE int stencil_first(const stencil_geo *geo, int kind, int d,
+                                 double x) {
+  double xi = (x - geo->lo[d]) * geo->inv_h + geo->off[d];
+  return kind == SHAPE_LINEAR ? (int)floor(xi)
+         : kind == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
+                              : (int)floor(xi - 0.5);
+}
+
 /* 1-D part: node indices (wrapped) and weights along d */
 STENCIL_INLINE int stencil_1d(const stencil_geo *geo, int kind, int d,
                               double x, double lp, int32_t *idx, double *w,

@@ -40,7 +40,7 @@ static void one_step(one *o, double L00, double L01, double L10, double L11,
   mat_sums s = {0, 0, 1e300, -1e300, 0, 0, 0};
   o->ps.L[0][0] = L00; o->ps.L[1][0] = L01;
   o->ps.L[2][0] = L10; o->ps.L[3][0] = L11;
-  o->m.model->update(&o->m, &o->ps, o->bmat, 0, dt, &s);
+  o->m.model->update(&o->m, &o->ps, o->bmat, 0, dt, 0, o->ps.n, &s);
   o->sum.plastic += s.plastic;
   o->sum.viscous += s.viscous;
   o->sum.strain = s.strain;
@@ -291,6 +291,7 @@ static void thermal_confined(void) {
     thermal_uniform(&s, dT);
     thermal(&s);
     s.dt = 1e-3;
+    sim_prepare(&s);
     constitutive(&s);
     UNIT_NEAR(s.ps.s[S_XX][0] / p, 1, 1e-14, k ? "confined heating (plastic): sxx / -3K alpha dT"
                                                : "confined heating: sxx / -3K alpha dT");
@@ -326,6 +327,7 @@ static void thermal_free_strain(void) {
   thermal_enable(&s);
   s.started = 1;
   s.dt = 1e-3;
+  sim_prepare(&s);
   for (n = 1; n <= 10; n++) {
     double r = (1 + nu) * alpha * 1.0 / s.dt;  /* 1 degree per step */
     thermal_uniform(&s, n);

@@ -1,0 +1,75 @@
+-- bench/threads.lua - (e) 1 against 2 threads on the filled 400 x 400
+-- block of (a) (linear, MUSL, 640,000 particles) and on the 1,000-grain
+-- bed of (c) (about 208,000 particles, 1,000 fields): rates, the
+-- speed-up, and memory per particle with threads.  The machine is
+-- shared, so the load average before each timing is printed with it;
+-- a speed-up is only as good as the cores that were free.
+local mvmpm = require "mvmpm"
+local B = dofile("bench/lib.lua")
+
+local function block()
+  local CELLS, PAD = 400, 2
+  local h = 1 / CELLS
+  local sim = mvmpm.sim {
+    domain = {x = {-PAD * h, 1 + PAD * h}, y = {-PAD * h, 1 + PAD * h}},
+    cell = h, ppc = 2, shape = "linear", update = "musl", flip = 1.0,
+    sides = "free", t_end = 1e9,
+  }
+  sim:body {shape = mvmpm.rect {lo = {0, 0}, hi = {1, 1}},
+            material = mvmpm.elastic {K = 1, G = 0.5, density = 1},
+            velocity = function(x, y) return 0.01 * math.sin(2 * math.pi * y), 0 end}
+  return sim
+end
+
+local function grains()
+  local H = 1 / 400
+  local W, HT, nx, ny = 400 * H, 160 * H, 50, 20
+  local r = W / (2 * nx)
+  local sim = mvmpm.sim {
+    domain = {x = {0, W}, y = {0, HT}}, cell = H, ppc = 2,
+    sides = "free", t_end = 1e9, contact = {friction = 0},
+  }
+  local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
+  local xc, yc = W / 2, HT / 2
+  local v = function(x, y) return -0.05 * (x - xc), -0.05 * (y - yc) end
+  for j = 0, ny - 1 do
+    for i = 0, nx - 1 do
+      sim:body {shape = mvmpm.disk {center = {(2 * i + 1) * r, (2 * j + 1) * r}, radius = r},
+                material = m, velocity = v}
+    end
+  end
+  return sim
+end
+
+local function load()
+  local f = io.open("/proc/loadavg")
+  if not f then return "?" end
+  local s = f:read("l")
+  f:close()
+  return s:match("^(%S+)")
+end
+
+for _, c in ipairs {{"block 400x400 linear MUSL", block}, {"1000 grains", grains}} do
+  local rate = {}
+  for _, t in ipairs {1, 2} do
+    local l = load()
+    local sim = c[2]()
+    sim.threads = t
+    local r, sec, n = B.rate(sim, 25) -- warm past the first sort by cell
+    rate[t] = r
+    B.line("rate", string.format("(e) %s, %d thread%s", c[1], t, t > 1 and "s" or ""),
+      r / 1e6, "M p-st/s", string.format("%d particles, %.1f ms/step, load %s", sim.n,
+        1e3 * sec, l))
+    if t == 2 then
+      local mem = sim.memory
+      B.line("memory", string.format("(e) %s, 2 threads / particle", c[1]),
+        (mem.particles + mem.grid + mem.threads) / sim.n, "bytes",
+        string.format("of which partial sums and plan %d bytes in all", mem.threads))
+    end
+    sim = nil
+    collectgarbage()
+    collectgarbage()
+  end
+  B.line("ratio", string.format("(e) %s: speed-up 2 / 1 thread", c[1]), rate[2] / rate[1],
+    "", "goal >= 1.8")
+end

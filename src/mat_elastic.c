@@ -34,10 +34,4 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   sum->power += power;
 }
 
-static double energy(const material *m, const particles *ps, size_t i) {
-  double s[NSTRESS];
-  mat_get(ps, i, s);
-  return ps->vol0[i] * mat_elastic_density(s, m->K, m->G);
-}
-
-const mat_model mat_elastic = {"elastic", setup, update, energy};
+const mat_model mat_elastic = {"elastic", setup, update, material_elastic_energy};

@@ -75,10 +75,5 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   sum->plastic += plastic;
 }
 
-static double energy(const material *m, const particles *ps, size_t i) {
-  double s[NSTRESS];
-  mat_get(ps, i, s);
-  return ps->vol0[i] * mat_elastic_density(s, m->K, m->G);
-}
-
-const mat_model mat_plastic = {"plastic", setup, update, energy};
+/* the stored energy is the elastic part of the stress only */
+const mat_model mat_plastic = {"plastic", setup, update, material_elastic_energy};

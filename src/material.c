@@ -50,3 +50,10 @@ int material_viscoelastic(material *m, const char *name, double rho,
   }
   return 0;
 }
+
+double material_elastic_energy(const material *m, const particles *ps,
+                               size_t i) {
+  double s[NSTRESS];
+  mat_get(ps, i, s);
+  return ps->vol0[i] * mat_elastic_density(s, m->K, m->G);
+}

@@ -88,6 +88,11 @@ int material_viscoelastic(material *m, const char *name, double rho,
                           double K, double G_inf, int n, const double *G,
                           const double *tau);
 
+/* the stored energy of particle i whose stress is elastic in K and G
+** (the elastic and plastic models' energy()) */
+double material_elastic_energy(const material *m, const particles *ps,
+                               size_t i);
+
 /* elastic energy density of a stress state, isotropic K and G */
 static inline double mat_elastic_density(const double *s, double K, double G) {
 #if DIM == 2

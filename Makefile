@@ -106,6 +106,7 @@ hard: $(BIN)
 # the documentation's figures, made again from the scenes
 figures: $(BIN)
 	./$(BIN) test docs/figures/fig5.lua
+	./$(BIN) test docs/figures/bounce.lua
 
 # the accuracy-cost study (docs/accuracy.md): each case over its grid of
 # settings, one after the other (timings are taken one run at a time);

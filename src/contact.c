@@ -25,14 +25,16 @@
 ** (|t|^2 - |t'|^2) / (2 m_r), summed over fields.
 */
 #include <math.h>
+#include <stdlib.h>
 #include "sim.h"
 
 #define MAXSLOTS 64
 
-void contact_normals(sim *s) {
-  grid *g = &s->g;
+/* normals of the shared nodes [k0, k1): each node reads and writes only
+** its own slots, so parts cut anywhere give the same numbers */
+static void normals(grid *g, size_t k0, size_t k1) {
   size_t k;
-  for (k = 0; k < g->nshared; k++) {
+  for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl;
     double G[DIM] = {0};
     int d;
@@ -49,6 +51,15 @@ void contact_normals(sim *s) {
     }
   }
 }
+
+static void normals_part(void *arg, int t, int nparts) {
+  grid *g = arg;
+  size_t k0, k1;
+  par_range(g->nshared, t, nparts, &k0, &k1);
+  normals(g, k0, k1);
+}
+
+void contact_normals(sim *s) { par_run(s->par, normals_part, &s->g); }
 
 /*
 ** The normal traction the bond carries at node n for field r (tension
@@ -150,12 +161,26 @@ static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
   return 0;
 }
 
-static void node(sim *s, int32_t n, double *const mom[DIM],
-                 double *const smom[DIM]) {
+/* Friction work of slot sl: summed at once (rec 0), or recorded for
+** contact_apply to add up in the sequential order after a threaded pass */
+static void book_friction(sim *s, int rec, int32_t sl, double w) {
+  if (!rec) {
+    s->e.friction += w;
+    return;
+  }
+  s->cfric[sl] = w;
+  s->cset[sl] = 1;
+}
+
+/* the correction at shared node k; rec: record the sums (see above) */
+static void node(sim *s, size_t k0, double *const mom[DIM],
+                 double *const smom[DIM], int rec) {
   grid *g = &s->g;
+  int32_t n = g->shared[k0];
   double c[MAXSLOTS][DIM], csum[DIM] = {0}, vref[DIM], M = g->m[n];
   int32_t sl, slots[MAXSLOTS], drv = -1;
   int ns = 0, k, d, bonds = s->fbond >= 0;
+  if (rec) s->cbody[k0] = -1;
   if (M <= s->mcut) return;
   for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl]) {
     slots[ns++] = sl;
@@ -173,6 +198,7 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
     sl = slots[k];
     mr = g->sm[sl];
     for (d = 0; d < DIM; d++) c[k][d] = 0;
+    if (rec) s->cset[sl] = 0;
     if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || mr <= s->mcut) continue;
     for (d = 0; d < DIM; d++) {
       dp[d] = smom[d][sl] - mr * vref[d];
@@ -212,23 +238,33 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
     if (tt > mu * dn) { /* slides: friction mu dn against the slip */
       double r = mu * dn / tt;
       for (d = 0; d < DIM; d++) c[k][d] -= r * t[d];
-      s->e.friction += (tt * tt - (tt - mu * dn) * (tt - mu * dn)) / (2 * mr);
+      book_friction(s, rec, sl,
+                    (tt * tt - (tt - mu * dn) * (tt - mu * dn)) / (2 * mr));
     } else { /* sticks */
       for (d = 0; d < DIM; d++) c[k][d] -= t[d];
-      s->e.friction += tt * tt / (2 * mr);
+      book_friction(s, rec, sl, tt * tt / (2 * mr));
     }
     for (d = 0; d < DIM; d++) csum[d] += c[k][d];
   }
   if (drv >= 0) { /* the driven body keeps its velocity and does work */
-    double cd[DIM], w = 0, *F = s->bodies[s->fdriven[g->sfield[drv]]].force;
-    for (d = 0; d < DIM; d++) F[d] += csum[d] / s->dt;
+    int32_t bi = s->fdriven[g->sfield[drv]];
+    double cd[DIM], w = 0, *F = s->bodies[bi].force;
+    if (rec) {
+      double *r = s->cdrv + (DIM + 1) * k0;
+      s->cbody[k0] = bi;
+      for (d = 0; d < DIM; d++) r[d] = csum[d] / s->dt;
+    } else
+      for (d = 0; d < DIM; d++) F[d] += csum[d] / s->dt;
     for (d = 0; d < DIM; d++) {
       cd[d] = g->sm[drv] * vref[d] - smom[d][drv];
       smom[d][drv] += cd[d];
       mom[d][n] += cd[d];
       w += (cd[d] + csum[d]) * vref[d];
     }
-    s->e.boundary += w;
+    if (rec)
+      s->cdrv[(DIM + 1) * k0 + DIM] = w;
+    else
+      s->e.boundary += w;
     for (k = 0; k < ns; k++)
       for (d = 0; d < DIM; d++) {
         smom[d][slots[k]] += c[k][d];
@@ -243,10 +279,73 @@ static void node(sim *s, int32_t n, double *const mom[DIM],
   }
 }
 
+/* Room for the records of a threaded pass, one per slot and per shared
+** node, grown (doubling) with the grid's own arrays, so a step does not
+** allocate unless the grid did; 0 or -1 (out of memory) */
+static int grow(void **p, size_t *cap, size_t need, size_t size) {
+  size_t c = *cap ? *cap : 256;
+  void *q;
+  if (need <= *cap) return 0;
+  while (c < need) c *= 2;
+  if (!(q = realloc(*p, c * size))) return -1;
+  *p = q;
+  *cap = c;
+  return 0;
+}
+
+int contact_prepare(sim *s) {
+  const grid *g = &s->g;
+  size_t sc = s->cslotcap, nc = s->cnodecap;
+  if (grow((void **)&s->cfric, &sc, g->nslot, sizeof *s->cfric) ||
+      grow((void **)&s->cset, &s->cslotcap, g->nslot, sizeof *s->cset))
+    return -1;
+  if (grow((void **)&s->cdrv, &nc, g->nshared, (DIM + 1) * sizeof *s->cdrv) ||
+      grow((void **)&s->cbody, &s->cnodecap, g->nshared, sizeof *s->cbody))
+    return -1;
+  return 0;
+}
+static void apply_part(void *arg, int t, int nparts) {
+  sim *s = arg;
+  size_t k, k0, k1;
+  par_range(s->g.nshared, t, nparts, &k0, &k1);
+  for (k = k0; k < k1; k++) node(s, k, s->g.q, s->g.sq, 1);
+}
+
+/* The records of apply_part added up node by node, slot by slot, as the
+** sequential pass adds them: the sums are the same bits for any count of
+** threads, and the same as with none */
+static void apply_sums(sim *s) {
+  const grid *g = &s->g;
+  size_t k;
+  for (k = 0; k < g->nshared; k++) {
+    int32_t n = g->shared[k], sl;
+    int ns = 0, d;
+    if (g->m[n] <= s->mcut) continue;
+    for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl], ns++)
+      if (s->cset[sl]) s->e.friction += s->cfric[sl];
+    if (s->cbody[k] >= 0) {
+      const double *r = s->cdrv + (DIM + 1) * k;
+      double *F = s->bodies[s->cbody[k]].force;
+      for (d = 0; d < DIM; d++) F[d] += r[d];
+      s->e.boundary += r[DIM];
+    }
+  }
+}
+
+/* Without bonds each node's correction reads and writes only its own node
+** and slots, so the nodes are cut among the threads.  With bonds the
+** traction reads neighbouring nodes' strengths, which a debonding cuts:
+** that pass stays in order, as does a call without contact_prepare's
+** room (both give the same numbers). */
 void contact_apply(sim *s) {
   grid *g = &s->g;
   size_t k;
   s->ncut = 0;
   s->bond_area = 0;
-  for (k = 0; k < g->nshared; k++) node(s, g->shared[k], g->q, g->sq);
+  if (s->fbond < 0 && s->cslotcap >= g->nslot && s->cnodecap >= g->nshared) {
+    par_run(s->par, apply_part, s);
+    apply_sums(s);
+    return;
+  }
+  for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);
 }

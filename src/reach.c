@@ -40,12 +40,64 @@ static void walls(sim *s, size_t i) {
   }
 }
 
-void reach(sim *s) {
+/* the reach of particle i into the slots of its shared stencil nodes;
+** with a plan (blk >= 0), only into the node rows this pass writes */
+static void shared(sim *s, size_t i, int blk, int pass) {
   const grid *g = &s->g;
   const particles *ps = &s->ps;
-  const body *bd = s->bodies;
+  const bands *b = &s->bands;
   const double l = s->lp * g->h;
   int32_t node[STENCIL_MAX];
+  double x[DIM];
+  int nn, d, k;
+  for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
+  nn = stencil_nodes(g, s->shape, x, node);
+  for (k = 0; k < nn; k++) {
+    int32_t n = node[k], sl;
+    double e = 0, nrm1 = 0;
+    if (g->head[n] < 0) continue;
+    if (blk >= 0 && (b->first[n / g->n[0]] == blk) != (pass == 1)) continue;
+    sl = grid_slot(g, n, s->bodies[ps->body[i]].field);
+    for (d = 0; d < DIM; d++) {
+      /* node position on the particle's side of any periodic seam */
+      int id = d == 0 ? n % g->n[0] : n / g->n[0];
+      double xn = grid_x(g, d, id);
+      double dx = x[d] - xn;
+      if (g->periodic[d]) {
+        double L = g->hi[d] - g->lo[d];
+        if (dx > 0.5 * L) dx -= L;
+        else if (dx < -0.5 * L) dx += L;
+      }
+      e += dx * g->sn[d][sl];
+      nrm1 += fabs(g->sn[d][sl]);
+    }
+    e += l * nrm1;
+    if (e > g->sext[sl]) g->sext[sl] = e;
+  }
+}
+
+typedef struct pass_job { sim *s; int pass; } pass_job;
+
+/* Part t of the scatter plan p2g made (the particles have not moved
+** since): a maximum does not depend on the order it is taken in, and in
+** a pass no two parts write one node row, so no two threads write one
+** slot */
+static void shared_part(void *arg, int t, int nparts) {
+  pass_job *j = arg;
+  const bands *b = &j->s->bands;
+  stencil_geo geo;
+  unsigned char mine[SHAPE_MAXW];
+  size_t i;
+  stencil_geo_init(&geo, &j->s->g);
+  for (i = b->i[t]; i < b->i[t + 1]; i++)
+    if (bands_rows(b, &geo, j->s->shape, j->s->ps.x[BANDS_DIM][i], t,
+                   j->pass, mine))
+      shared(j->s, i, t, j->pass);
+}
+
+void reach(sim *s) {
+  const particles *ps = &s->ps;
+  const bands *b = &s->bands;
   int k, anywall = 0;
   size_t i;
   for (k = 0; k < NSIDES; k++)
@@ -54,33 +106,14 @@ void reach(sim *s) {
       anywall = 1;
       for (j = 0; j < s->sides[k].next; j++) s->sides[k].ext[j] = -1e300;
     }
-  for (i = 0; i < ps->n; i++) {
-    double x[DIM];
-    int nn, d;
-    for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    if (anywall) walls(s, i);
-    if (!g->nshared) continue;
-    nn = stencil_nodes(g, s->shape, x, node);
-    for (k = 0; k < nn; k++) {
-      int32_t n = node[k], sl;
-      double e = 0, nrm1 = 0;
-      if (g->head[n] < 0) continue;
-      sl = grid_slot(g, n, bd[ps->body[i]].field);
-      for (d = 0; d < DIM; d++) {
-        /* node position on the particle's side of any periodic seam */
-        int id = d == 0 ? n % g->n[0] : n / g->n[0];
-        double xn = grid_x(g, d, id);
-        double dx = x[d] - xn;
-        if (g->periodic[d]) {
-          double L = g->hi[d] - g->lo[d];
-          if (dx > 0.5 * L) dx -= L;
-          else if (dx < -0.5 * L) dx += L;
-        }
-        e += dx * g->sn[d][sl];
-        nrm1 += fabs(g->sn[d][sl]);
-      }
-      e += l * nrm1;
-      if (e > g->sext[sl]) g->sext[sl] = e;
-    }
-  }
+  if (anywall)
+    for (i = 0; i < ps->n; i++) walls(s, i);
+  if (!s->g.nshared) return;
+  if (b->nb) {
+    pass_job j = {s, 1};
+    par_run(s->par, shared_part, &j);
+    j.pass = 2;
+    par_run(s->par, shared_part, &j);
+  } else
+    for (i = 0; i < ps->n; i++) shared(s, i, -1, 1);
 }

@@ -61,6 +61,10 @@ void sim_free(sim *s) {
   par_free(s->par);
   bands_free(&s->bands);
   free(s->red);
+  free(s->cfric);
+  free(s->cdrv);
+  free(s->cset);
+  free(s->cbody);
   free(s->prof);
   memset(s, 0, sizeof *s);
 }
@@ -401,7 +405,7 @@ int sim_step(sim *s) {
   prof_mark(s->prof, PROF_HOUSE);
   par_run(s->par, reset_part, &s->g);
   grid_reset_slots(&s->g);
-  if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
+  if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
   }

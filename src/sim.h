@@ -121,6 +121,13 @@ typedef struct sim {
   bands bands;       /* the plan of this step's scatters (bands.h) */
   void *red;         /* per-chunk partial sums of the threaded phases */
   size_t redcap;     /* ... its bytes */
+  /* contact.c's records of a threaded pass, added up in node order after
+  ** it: a friction term per slot (cset: booked), and per shared node the
+  ** driven body's force and work (cbody -1: none) */
+  double *cfric, *cdrv;
+  unsigned char *cset;
+  int32_t *cbody;
+  size_t cslotcap, cnodecap;
   struct sim_prof *prof; /* time per phase, when profiling (prof.h) */
   char err[256];
 } sim;
@@ -185,6 +192,7 @@ void solve_velocity(sim *s);   /* solve.c: q -> vL, f -> dv */
 void solve_remap(sim *s);      /* solve.c: p -> remapped velocity */
 void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
+int contact_prepare(sim *s);   /* contact.c: room for its records */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
 void bond_gather(sim *s);      /* bond.c: strength, stress at shared slots */
 void bond_scatter(sim *s);     /* bond.c: debonding back to particles */

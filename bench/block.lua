@@ -7,19 +7,9 @@
 local mvmpm = require "mvmpm"
 local B = dofile("bench/lib.lua")
 
-local CELLS, PAD = 400, 2
 
 local function block(shape, update)
-  local h = 1 / CELLS
-  local sim = mvmpm.sim {
-    domain = {x = {-PAD * h, 1 + PAD * h}, y = {-PAD * h, 1 + PAD * h}},
-    cell = h, ppc = 2, shape = shape, update = update, flip = 1.0,
-    sides = "free", t_end = 1e9,
-  }
-  sim:body {shape = mvmpm.rect {lo = {0, 0}, hi = {1, 1}},
-            material = mvmpm.elastic {K = 1, G = 0.5, density = 1},
-            velocity = function(x, y) return 0.01 * math.sin(2 * math.pi * y), 0 end}
-  return sim
+  return B.block {shape = shape, update = update}
 end
 
 local cases = {

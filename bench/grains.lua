@@ -12,23 +12,7 @@ local B = dofile("bench/lib.lua")
 local H = 1 / 400
 local W, HT = 400 * H, 160 * H
 
-local function packing(nx, ny)
-  local r = W / (2 * nx)
-  local sim = mvmpm.sim {
-    domain = {x = {0, W}, y = {0, HT}}, cell = H, ppc = 2,
-    sides = "free", t_end = 1e9, contact = {friction = 0},
-  }
-  local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
-  local xc, yc = W / 2, HT / 2
-  local v = function(x, y) return -0.05 * (x - xc), -0.05 * (y - yc) end
-  for j = 0, ny - 1 do
-    for i = 0, nx - 1 do
-      sim:body {shape = mvmpm.disk {center = {(2 * i + 1) * r, (2 * j + 1) * r}, radius = r},
-                material = m, velocity = v}
-    end
-  end
-  return sim
-end
+local packing = B.packing
 
 local per = {}
 for _, c in ipairs {{5, 2}, {50, 20}} do

@@ -59,4 +59,50 @@ function B.rss()
   return kb and tonumber(kb) * 1024
 end
 
+-- The bench scenes, built in one place.  opt: fields of mvmpm.sim to
+-- add or replace (shape, update, dt, t_end ...).
+local function with(base, opt)
+  for k, v in pairs(opt or {}) do base[k] = v end
+  return base
+end
+
+-- (a), (e): a filled 400 x 400-cell elastic block with a standing shear
+-- wave, vx = 0.01 sin(2 pi y), so every particle strains; two empty cells
+-- on each side keep it inside the domain with free sides
+function B.block(opt)
+  local CELLS, PAD = 400, 2
+  local h = 1 / CELLS
+  local sim = mvmpm.sim(with({
+    domain = {x = {-PAD * h, 1 + PAD * h}, y = {-PAD * h, 1 + PAD * h}},
+    cell = h, ppc = 2, shape = "linear", update = "musl", flip = 1.0,
+    sides = "free", t_end = 1e9,
+  }, opt))
+  sim:body {shape = mvmpm.rect {lo = {0, 0}, hi = {1, 1}},
+            material = mvmpm.elastic {K = 1, G = 0.5, density = 1},
+            velocity = function(x, y) return 0.01 * math.sin(2 * math.pi * y), 0 end}
+  return sim
+end
+
+-- (c), (e): nx x ny touching elastic discs in a 400 x 160-cell box, one
+-- field each, frictionless, under uniform compression
+function B.packing(nx, ny, opt)
+  local H = 1 / 400
+  local W, HT = 400 * H, 160 * H
+  local r = W / (2 * nx)
+  local sim = mvmpm.sim(with({
+    domain = {x = {0, W}, y = {0, HT}}, cell = H, ppc = 2,
+    sides = "free", t_end = 1e9, contact = {friction = 0},
+  }, opt))
+  local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
+  local xc, yc = W / 2, HT / 2
+  local v = function(x, y) return -0.05 * (x - xc), -0.05 * (y - yc) end
+  for j = 0, ny - 1 do
+    for i = 0, nx - 1 do
+      sim:body {shape = mvmpm.disk {center = {(2 * i + 1) * r, (2 * j + 1) * r}, radius = r},
+                material = m, velocity = v}
+    end
+  end
+  return sim
+end
+
 return B

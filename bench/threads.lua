@@ -7,39 +7,9 @@
 local mvmpm = require "mvmpm"
 local B = dofile("bench/lib.lua")
 
-local function block()
-  local CELLS, PAD = 400, 2
-  local h = 1 / CELLS
-  local sim = mvmpm.sim {
-    domain = {x = {-PAD * h, 1 + PAD * h}, y = {-PAD * h, 1 + PAD * h}},
-    cell = h, ppc = 2, shape = "linear", update = "musl", flip = 1.0,
-    sides = "free", t_end = 1e9,
-  }
-  sim:body {shape = mvmpm.rect {lo = {0, 0}, hi = {1, 1}},
-            material = mvmpm.elastic {K = 1, G = 0.5, density = 1},
-            velocity = function(x, y) return 0.01 * math.sin(2 * math.pi * y), 0 end}
-  return sim
-end
+local function block() return B.block() end
 
-local function grains()
-  local H = 1 / 400
-  local W, HT, nx, ny = 400 * H, 160 * H, 50, 20
-  local r = W / (2 * nx)
-  local sim = mvmpm.sim {
-    domain = {x = {0, W}, y = {0, HT}}, cell = H, ppc = 2,
-    sides = "free", t_end = 1e9, contact = {friction = 0},
-  }
-  local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
-  local xc, yc = W / 2, HT / 2
-  local v = function(x, y) return -0.05 * (x - xc), -0.05 * (y - yc) end
-  for j = 0, ny - 1 do
-    for i = 0, nx - 1 do
-      sim:body {shape = mvmpm.disk {center = {(2 * i + 1) * r, (2 * j + 1) * r}, radius = r},
-                material = m, velocity = v}
-    end
-  end
-  return sim
-end
+local function grains() return B.packing(50, 20) end
 
 local function load()
   local f = io.open("/proc/loadavg")

@@ -14,17 +14,11 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   double s[NSTRESS], D[NSTRESS], strain = 0, power = 0;
   size_t i;
   for (i = i0; i < i1; i++) {
-    double J, tr;
+    double J;
     if (bmat[ps->body[i]] != id) continue;
     mat_get(ps, i, s);
     J = mat_kinematics(ps, i, dt, s, D);
-#if DIM == 2
-    tr = dt * (D[S_XX] + D[S_YY]);
-    s[S_XX] += lam * tr + g2 * dt * D[S_XX];
-    s[S_YY] += lam * tr + g2 * dt * D[S_YY];
-    s[S_XY] += g2 * dt * D[S_XY];
-    s[S_ZZ] += lam * tr;
-#endif
+    mat_hooke(s, D, dt, lam, g2);
     mat_put(ps, i, s);
     mat_sum_j(sum, J);
     strain += ps->vol0[i] * mat_elastic_density(s, K, G);

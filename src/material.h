@@ -185,6 +185,22 @@ static inline double mat_deviator(const double *s, double *p, double *d) {
 #endif
 }
 
+/* the isotropic elastic increment over dt, s += lambda tr(D) dt I +
+** 2 G D dt (plane strain: D_zz = 0, so zz grows with lambda tr D only);
+** g2 = 2 G */
+static inline void mat_hooke(double *s, const double *D, double dt,
+                             double lam, double g2) {
+#if DIM == 2
+  double tr = dt * (D[S_XX] + D[S_YY]);
+  s[S_XX] += lam * tr + g2 * dt * D[S_XX];
+  s[S_YY] += lam * tr + g2 * dt * D[S_YY];
+  s[S_XY] += g2 * dt * D[S_XY];
+  s[S_ZZ] += lam * tr;
+#else
+#error "mat_hooke: 3-D not written yet"
+#endif
+}
+
 /* gather / scatter the stress of particle i */
 static inline void mat_get(const particles *ps, size_t i, double *s) {
   int k;

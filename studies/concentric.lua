@@ -18,40 +18,12 @@ local mvmpm = require "mvmpm"
 local S = require "mvmpm.study"
 
 local K, G, alpha, rate, a, b = 1, 0.5, 1, 4e-4, 0.2, 0.4
-local nu = (3 * K - 2 * G) / (2 * (3 * K + G))
-local Kp = K + G / 3
-local unit = (1 + nu) / (1 / (2 * Kp) + (a * a / (2 * Kp) + b * b / (2 * G)) / (b * b - a * a))
+local lame = require "mvmpm.lame"
+local unit = lame.unit(K, G, a, b)
 local t_end = 12
 
 local function lame_error(sim, h)
-  local x, st = sim:particles("position"), sim:particles("stress")
-  local s = unit * alpha * rate * sim.t
-  local bins = {}
-  for i = 1, #x.x do
-    local dx, dy = x.x[i] - 0.5, x.y[i] - 0.5
-    local r = math.sqrt(dx * dx + dy * dy)
-    local c, sn = dx / r, dy / r
-    local srr = c * c * st.xx[i] + sn * sn * st.yy[i] + 2 * c * sn * st.xy[i]
-    local stt = sn * sn * st.xx[i] + c * c * st.yy[i] - 2 * c * sn * st.xy[i]
-    local k = math.floor(r / h) + 1
-    local bin = bins[k] or {n = 0, rr = 0, tt = 0, r = 0}
-    bin.n, bin.rr, bin.tt, bin.r = bin.n + 1, bin.rr + srr, bin.tt + stt, bin.r + r
-    bins[k] = bin
-  end
-  local worst = 0
-  for _, bin in pairs(bins) do
-    local r = bin.r / bin.n
-    local rr, tt
-    if r < a then rr, tt = s, s
-    else
-      local f = s * a * a / (b * b - a * a)
-      rr, tt = f * (b * b / (r * r) - 1), -f * (b * b / (r * r) + 1)
-    end
-    if math.abs(r - a) > 1.5 * h and r < b - 1.5 * h and r > h then
-      worst = math.max(worst, math.abs(bin.rr / bin.n - rr) / s, math.abs(bin.tt / bin.n - tt) / s)
-    end
-  end
-  return worst
+  return (lame.profile(sim, {0.5, 0.5}, unit * alpha * rate * sim.t, a, b, h))
 end
 
 local case = {

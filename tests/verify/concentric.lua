@@ -13,48 +13,13 @@ local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
 local K, G, alpha, rate, a, b, sb = 1, 0.5, 1, 4e-4, 0.2, 0.4, 0.005
-local nu = (3 * K - 2 * G) / (2 * (3 * K + G))
+local lame = require "mvmpm.lame"
 local E = 9 * K * G / (3 * K + G)
-local Kp = K + G / 3
 local h = 1 / 50
-local unit = (1 + nu) / (1 / (2 * Kp) + (a * a / (2 * Kp) + b * b / (2 * G)) / (b * b - a * a))
+local unit = lame.unit(K, G, a, b)
 
--- polar stresses of every particle of one body, binned by radius
 local function profile(sim, dT)
-  local x, st, body = sim:particles("position"), sim:particles("stress"), sim:particles("body")
-  local s = unit * alpha * math.abs(dT)
-  local bins = {}
-  for i = 1, #body do
-    local dx, dy = x.x[i] - 0.5, x.y[i] - 0.5
-    local r = math.sqrt(dx * dx + dy * dy)
-    local c, sn = dx / r, dy / r
-    local srr = c * c * st.xx[i] + sn * sn * st.yy[i] + 2 * c * sn * st.xy[i]
-    local stt = sn * sn * st.xx[i] + c * c * st.yy[i] - 2 * c * sn * st.xy[i]
-    local k = math.floor(r / h) + 1
-    local bin = bins[k] or {n = 0, rr = 0, tt = 0, r = 0}
-    bin.n, bin.rr, bin.tt, bin.r = bin.n + 1, bin.rr + srr, bin.tt + stt, bin.r + r
-    bins[k] = bin
-  end
-  -- worst error of the bin means against Lame, over s, away from the
-  -- interface's own cells (where the two materials share a cell) and the
-  -- outer edge's
-  local worst, worsti = 0, 0
-  for _, bin in pairs(bins) do
-    local r = bin.r / bin.n
-    local rr, tt
-    if r < a then rr, tt = s, s
-    else
-      local f = s * a * a / (b * b - a * a)
-      rr, tt = f * (b * b / (r * r) - 1), -f * (b * b / (r * r) + 1)
-    end
-    local err = math.max(math.abs(bin.rr / bin.n - rr), math.abs(bin.tt / bin.n - tt)) / s
-    if math.abs(r - a) > 1.5 * h and r < b - 1.5 * h and r > h then
-      worst = math.max(worst, err)
-    else
-      worsti = math.max(worsti, err)
-    end
-  end
-  return worst, worsti
+  return lame.profile(sim, {0.5, 0.5}, unit * alpha * math.abs(dT), a, b, h)
 end
 
 local sim = mvmpm.load("scenarios/concentric_debond.lua", {strength = sb, t_end = 30})

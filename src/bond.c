@@ -32,13 +32,12 @@
 
 /* the stencil with the shape kind a constant in each branch (which also
 ** lets the compiler see every weight written) */
-static void eval(const sim *s, const double *x, stencil *st) {
-  stencil_geo geo;
-  stencil_geo_init(&geo, &s->g);
+static void eval(const sim *s, const stencil_geo *geo, const double *x,
+                 stencil *st) {
   switch (s->shape) {
-  case SHAPE_GIMP: stencil_eval(&geo, SHAPE_GIMP, x, s->lp, st); break;
-  case SHAPE_BSPLINE2: stencil_eval(&geo, SHAPE_BSPLINE2, x, s->lp, st); break;
-  default: stencil_eval(&geo, SHAPE_LINEAR, x, s->lp, st);
+  case SHAPE_GIMP: stencil_eval(geo, SHAPE_GIMP, x, s->lp, st); break;
+  case SHAPE_BSPLINE2: stencil_eval(geo, SHAPE_BSPLINE2, x, s->lp, st); break;
+  default: stencil_eval(geo, SHAPE_LINEAR, x, s->lp, st);
   }
 }
 
@@ -63,6 +62,8 @@ void bond_gather(sim *s) {
   const double *bp = particles_comp(ps, s->fbond, 0);
   stencil st;
   size_t i, k;
+  stencil_geo geo;
+  stencil_geo_init(&geo, g);
   for (i = 0; i < ps->n; i++) {
     double x[DIM], mp = ps->m[i], V;
     int32_t node[STENCIL_MAX], f = bd[ps->body[i]].field, own;
@@ -71,7 +72,7 @@ void bond_gather(sim *s) {
     nn = stencil_nodes(g, s->shape, x, node);
     for (k = 0; k < (size_t)nn && !any; k++) any = g->head[node[k]] >= 0;
     if (!any) continue;
-    eval(s, x, &st);
+    eval(s, &geo, x, &st);
 #if DIM == 2
     V = ps->vol0[i] * (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
 #endif

@@ -8,7 +8,8 @@
 ** then removed and the tangential part reduced by mu dn (Coulomb; removed
 ** if smaller).  With the separation check the wall acts only once the
 ** material reaches the wall line (reach.c).  The wall's impulse c does
-** work c.v_w on the material.
+** work c.v_w on the material, and dissipates minus its work on the
+** node's mean velocity over the step in the wall's frame (contact.c).
 **
 ** A driven body's field is given its prescribed velocity at every node
 ** it owns alone; at shared nodes contact.c does it.  The impulse needed
@@ -19,8 +20,9 @@
 
 /* one node (or slot) of mass m against side k; returns the impulse */
 static void wall_node(sim *s, side *sd, int d, double sign, double m,
-                      double *const mom[DIM], size_t i, double *imp) {
-  double dp[DIM], dn, tt = 0, w = 0;
+                      double *const p0[DIM], double *const mom[DIM], size_t i,
+                      double *imp) {
+  double dp[DIM], dn, tt = 0, w = 0, loss = 0;
   int e;
   for (e = 0; e < DIM; e++) {
     dp[e] = mom[e][i] - m * sd->v[e];
@@ -37,10 +39,13 @@ static void wall_node(sim *s, side *sd, int d, double sign, double m,
     if (tt > sd->mu * dn) imp[e] = -sd->mu * dn * dp[e] / tt;
     else imp[e] = -dp[e];
   }
-  {
-    double t2 = tt > sd->mu * dn ? tt - sd->mu * dn : 0;
-    s->e.friction += (tt * tt - t2 * t2) / (2 * m);
-  }
+  /* dissipated: minus the impulse's work on the mean of the velocity the
+  ** step began with and the one it ends with, in the wall's frame (see
+  ** contact.c) */
+  for (e = 0; e < DIM; e++)
+    if (e != d)
+      loss -= 0.5 * (p0[e][i] + mom[e][i] + imp[e] - 2 * m * sd->v[e]) * imp[e];
+  s->e.friction += loss / m;
   for (e = 0; e < DIM; e++) {
     mom[e][i] += imp[e];
     w += imp[e] * sd->v[e];
@@ -62,12 +67,12 @@ static void wall_line(sim *s, int k, int line) {
     if (g->m[n] <= s->mcut) continue;
     if (s->gap_check && sd->ext[j] < 0) continue;
     if (g->head[n] < 0) {
-      wall_node(s, sd, d, sign, g->m[n], mom, (size_t)n, imp);
+      wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, imp);
       continue;
     }
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       if (g->sm[sl] <= s->mcut) continue;
-      wall_node(s, sd, d, sign, g->sm[sl], smom, (size_t)sl, imp);
+      wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, imp);
       for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
     }
   }

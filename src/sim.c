@@ -61,9 +61,7 @@ void sim_free(sim *s) {
   par_free(s->par);
   bands_free(&s->bands);
   free(s->red);
-  free(s->cfric);
-  free(s->cdrv);
-  free(s->cset);
+  free(s->crec);
   free(s->cbody);
   free(s->prof);
   memset(s, 0, sizeof *s);

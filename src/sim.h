@@ -122,12 +122,11 @@ typedef struct sim {
   void *red;         /* per-chunk partial sums of the threaded phases */
   size_t redcap;     /* ... its bytes */
   /* contact.c's records of a threaded pass, added up in node order after
-  ** it: a friction term per slot (cset: booked), and per shared node the
-  ** driven body's force and work (cbody -1: none) */
-  double *cfric, *cdrv;
-  unsigned char *cset;
+  ** it: per shared node the driven body's force and work (cbody -1:
+  ** none) */
+  double *crec;
   int32_t *cbody;
-  size_t cslotcap, cnodecap;
+  size_t cnodecap;
   struct sim_prof *prof; /* time per phase, when profiling (prof.h) */
   char err[256];
 } sim;

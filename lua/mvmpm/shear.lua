@@ -69,6 +69,8 @@ function M.params(extra)
     binder_G2 = 0.02, binder_tau2 = 10.0,
     cfl = 0.25,
     flip = 1.0,
+    update = "musl",     -- or "usl"
+    shape = "linear",    -- or "gimp", "bspline2"
   }
   for k, v in pairs(extra or {}) do p[k] = v end
   return p
@@ -112,6 +114,7 @@ function M.build(P)
   local sim = mvmpm.sim {
     domain = {x = {0, L}, y = {0, L}}, cell = L / P.cells, ppc = P.ppc,
     t_end = M.time_of(P, P.strain), cfl = P.cfl, flip = P.flip,
+    update = P.update, shape = P.shape,
     sides = {left = side(-1), right = side(1), bottom = "periodic", top = "periodic"},
     contact = {friction = P.friction},
   }

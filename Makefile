@@ -77,6 +77,21 @@ PBX_SIDES ?= 0.65e-3 1.2e-3 1.7e-3 2.4e-3
 pbx-scale: $(BIN)
 	@for s in $(PBX_SIDES); do PBX_SIDE=$$s ./$(BIN) test bench/pbx_scale.lua | grep '^pbx'; done
 
+# a reduced PBX bed (0.36 mm square, grains half the default size, 4
+# cells across the smallest) sheared to 100 % strain at 1e6/s, with
+# binder and dry, in the background (about 10-15 minutes each on a free
+# core); figures into docs/figures/pbx_shear/<run>/ (docs/pbx.md)
+PBX_SHEAR = --set size=0.36e-3 --set scale=0.5 --set cells=4 --set packing=0.7 --set rate=1e6 --set ramp=0.01 --set images=0.25 --quiet
+pbx-shear: $(BIN)
+	@mkdir -p out
+	nohup sh -c 'for r in binder:true dry:false; do name=$${r%%:*}; \
+	  ./$(BIN) run scenarios/pbx9501.lua $(PBX_SHEAR) --set binder=$${r#*:} --out out/pbx_shear_$$name || exit 1; \
+	  mkdir -p docs/figures/pbx_shear/$$name; \
+	  cp out/pbx_shear_$$name/pbx_*.png out/pbx_shear_$$name/pbx_summary.txt out/pbx_shear_$$name/pbx_locking.csv \
+	     out/pbx_shear_$$name/pbx_stats.csv docs/figures/pbx_shear/$$name/; \
+	done; echo pbx shear runs done' > out/pbx_shear.log 2>&1 &
+	@echo "running in the background; progress in out/pbx_shear.log"
+
 clean:
 	rm -rf build build-san build-tsan build-fuzz mvmpm
 
@@ -116,7 +131,7 @@ study: $(BIN)
 	@mkdir -p out/study docs/figures
 	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
 
-.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale fuzz random study
+.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale pbx-shear fuzz random study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

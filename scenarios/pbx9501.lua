@@ -31,6 +31,7 @@
 local mvmpm = require "mvmpm"
 local pack = require "mvmpm.pack"
 local M = require "mvmpm.materials"
+local shear = require "mvmpm.shear"
 
 local P = mvmpm.params {
   seed = 1,            -- the bed's seed
@@ -153,8 +154,94 @@ local function side_force(name, list)
   return fy
 end
 
+-- what the run keeps for its reports: one sample per record, the
+-- shear stress averaged over the steps since the last
 local hist, area0, written = nil, nil, false
 local next_image = 0
+local mon = {strain = {}, tau = {}, debond = {}, work = {}, kinetic = {}, stored = {},
+             friction = {}, plastic = {}, viscous = {}, residual = {}, bad = {},
+             max_depth = 0, jmin = math.huge, max_residual = 0}
+local acc, nacc, reported = 0, 0, false
+
+-- at each record: the invariants (no NaN, det F > 0, no particle
+-- buried a cell deep in another body: sim:overlap, src/diag_overlap.c)
+local function sample(s, e, g, tau)
+  local n_ov, depth = s:overlap()
+  if e.total ~= e.total or tau ~= tau then mon.bad[#mon.bad + 1] = string.format("NaN at strain %.4f", g) end
+  if not (e.jmin > 0) then mon.bad[#mon.bad + 1] = string.format("J <= 0 at strain %.4f", g) end
+  if n_ov > 0 then
+    mon.bad[#mon.bad + 1] = string.format("%d particles buried %d cells at strain %.4f", n_ov, depth, g)
+  end
+  mon.max_depth = math.max(mon.max_depth, depth)
+  mon.jmin = math.min(mon.jmin, e.jmin)
+  local k = #mon.strain + 1
+  mon.strain[k], mon.tau[k] = g, tau
+  mon.debond[k] = area0 and 1 - e.bonded_area / area0 or 0
+  mon.work[k], mon.kinetic[k], mon.stored[k] = e.boundary_work, e.kinetic, e.strain
+  mon.friction[k], mon.plastic[k], mon.viscous[k], mon.residual[k] =
+    e.dissipated, e.plastic, e.viscous, e.residual
+  if g > 2 * P.ramp and e.boundary_work > 0 then
+    mon.max_residual = math.max(mon.max_residual, math.abs(e.residual) / e.boundary_work)
+  end
+end
+
+-- at the end: the force-strain plot with locking events (the detector of
+-- mvmpm.shear), the debonding and energy plots, a summary
+local function report(dir)
+  local events = shear.locking(mon.strain, mon.tau, 2 * P.ramp)
+  local f = assert(io.open(dir .. "/pbx_locking.csv.part", "w"))
+  f:write("strain,peak_strain,end_strain,base,peak,mean\n")
+  for _, ev in ipairs(events) do
+    f:write(string.format("%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", ev.strain, ev.peak_strain,
+                          ev.end_strain, ev.base, ev.peak, ev.mean))
+  end
+  f:close()
+  assert(os.rename(dir .. "/pbx_locking.csv.part", dir .. "/pbx_locking.csv"))
+  local ex, ey = {}, {}
+  for k, ev in ipairs(events) do ex[k], ey[k] = ev.peak_strain, ev.peak end
+  local series = {{x = mon.strain, y = mon.tau, label = "shear stress (F_right - F_left) / 2H"}}
+  if #ex > 0 then series[2] = {x = ex, y = ey, style = "points", label = "locking events"} end
+  mvmpm.plot {file = dir .. "/pbx_force_strain.png", xlabel = "nominal shear strain",
+              ylabel = "shear stress (Pa)", series = series,
+              title = string.format("PBX bed, %s: shear stress and locking events",
+                                    P.binder and "with binder" or "dry")}
+  mvmpm.plot {file = dir .. "/pbx_energy.png", xlabel = "nominal shear strain",
+              ylabel = "energy (J per m of thickness)", title = "Energy budget", series = {
+                {x = mon.strain, y = mon.work, label = "boundary work"},
+                {x = mon.strain, y = mon.kinetic, label = "kinetic"},
+                {x = mon.strain, y = mon.stored, label = "stored (strain)"},
+                {x = mon.strain, y = mon.friction, label = "friction"},
+                {x = mon.strain, y = mon.plastic, label = "plastic"},
+                {x = mon.strain, y = mon.viscous, label = "viscous"},
+                {x = mon.strain, y = mon.residual, label = "residual"}}}
+  if binder and bond then
+    mvmpm.plot {file = dir .. "/pbx_debond.png", xlabel = "nominal shear strain",
+                ylabel = "debonded fraction of the interface", yrange = {0, 1},
+                title = string.format("Debonding (bond strength %g Pa)", P.bond),
+                series = {{x = mon.strain, y = mon.debond}}}
+  end
+  local mean, n = 0, 0
+  for k, g in ipairs(mon.strain) do
+    if g > 2 * P.ramp then mean, n = mean + mon.tau[k], n + 1 end
+  end
+  local lines = {
+    string.format("strain reached              %.4g", mon.strain[#mon.strain] or 0),
+    string.format("mean shear stress (Pa)      %.4g", n > 0 and mean / n or 0),
+    string.format("locking events              %d", #events),
+    string.format("debonded fraction at end    %.4g", mon.debond[#mon.debond] or 0),
+    string.format("max |residual| / work       %.4g (after twice the ramp)", mon.max_residual),
+    string.format("least det F                 %.4g", mon.jmin),
+    string.format("deepest burial (cells)      %d", mon.max_depth),
+    string.format("invariant failures          %d", #mon.bad),
+  }
+  for _, b in ipairs(mon.bad) do lines[#lines + 1] = "invariant: " .. b end
+  f = assert(io.open(dir .. "/pbx_summary.txt.part", "w"))
+  f:write(table.concat(lines, "\n"), "\n")
+  f:close()
+  assert(os.rename(dir .. "/pbx_summary.txt.part", dir .. "/pbx_summary.txt"))
+  print(table.concat(lines, "\n"))
+end
+
 sim:every {steps = 1, fn = function(s)
   local dir = s.outdir
   if not written and dir ~= "" then
@@ -166,14 +253,20 @@ sim:every {steps = 1, fn = function(s)
   end
   local e = s:energy()
   if not area0 and e.bonded_area > 0 then area0 = e.bonded_area end
-  if hist and (s.steps % P.record == 0 or s.t >= t_end) then
-    local fl, fr = side_force("left", left), side_force("right", right)
-    hist:write(string.format(
-      "%d,%.9g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
-      s.steps, s.t, strain_at(s.t), (fr - fl) / (2 * W), fl, fr, e.kinetic, e.strain,
-      e.plastic, e.viscous, e.dissipated, e.boundary_work, e.residual, e.bonded_area,
-      area0 and 1 - e.bonded_area / area0 or 0, e.jmin, e.jmax))
-    hist:flush()
+  local fl, fr = side_force("left", left), side_force("right", right)
+  acc, nacc = acc + (fr - fl) / (2 * W), nacc + 1
+  if s.steps % P.record == 0 or s.t >= t_end then
+    local g = strain_at(s.t)
+    sample(s, e, g, acc / nacc)
+    acc, nacc = 0, 0
+    if hist then
+      hist:write(string.format(
+        "%d,%.9g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n",
+        s.steps, s.t, g, mon.tau[#mon.tau], fl, fr, e.kinetic, e.strain,
+        e.plastic, e.viscous, e.dissipated, e.boundary_work, e.residual, e.bonded_area,
+        mon.debond[#mon.debond], e.jmin, e.jmax))
+      hist:flush()
+    end
   end
   if dir ~= "" and P.images > 0 and strain_at(s.t) >= next_image then
     local tag = string.format("%03d", math.floor(100 * next_image + 0.5))
@@ -183,10 +276,15 @@ sim:every {steps = 1, fn = function(s)
               title = string.format("|s1 - s2| (Pa), strain %.2f", strain_at(s.t))}
     next_image = next_image + P.images
   end
+  if dir ~= "" and not reported and s.t >= t_end then
+    reported = true
+    if hist then hist:close(); hist = nil end
+    report(dir)
+  end
 end}
 sim:output {every = t_end / 10, csv_every = P.record}
 
 -- for scripts that load the scene (tests, bench): the bed and helpers
 PBX = {bed = bed, grains = grains, binder = binder, left = left, right = right,
-       strain_at = strain_at, side_force = side_force, V0 = V0, cell = h}
+       strain_at = strain_at, side_force = side_force, V0 = V0, cell = h, monitor = mon}
 return sim

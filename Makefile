@@ -114,7 +114,7 @@ random:
 	@$(MAKE) --no-print-directory SAN=1 build-san/mvmpm
 	SEEDS=$(RANDOM_SEEDS) ./build-san/mvmpm test tests/random/gen.lua
 
-# the hard-case suite (not yet part of make test: see tests/hard/README)
+# the hard-case suite alone (it is part of make test)
 hard: $(BIN)
 	./$(BIN) test tests/hard/*.lua
 

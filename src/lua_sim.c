@@ -132,10 +132,11 @@ int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
-      NULL};
+      "wall_remap", NULL};
   static const char *const updates[] = {"usl", "musl", NULL};
   static const char *const transfers[] = {"flip", "apic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
+  static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   const char *what = "sim";
   double lo[DIM], hi[DIM], h, nodes, bytes;
   int periodic[NSIDES] = {0}, pdim[DIM], shape, ppc, k, d, sidx;
@@ -233,9 +234,11 @@ int lsim_new(lua_State *L) {
         luaL_error(L, "sim: %s", ls->s.err);
       for (k = 0; k < NSIDES; k++) {
         double *ext = ls->s.sides[k].ext;
+        unsigned char *acted = ls->s.sides[k].acted;
         size_t next = ls->s.sides[k].next;
         ls->s.sides[k] = keep[k];
         ls->s.sides[k].ext = ext;
+        ls->s.sides[k].acted = acted;
         ls->s.sides[k].next = next;
       }
     }
@@ -263,6 +266,7 @@ int lsim_new(lua_State *L) {
     sim_set_threads(s, (int)chk_num(L, 1, what, "threads", lsim_env_threads(),
                                     1, PAR_MAX, CHK_INT));
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
+    s->wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
     lua_getfield(L, 1, "units");
     snprintf(ls->units, sizeof ls->units, "%s",
              lua_isnil(L, -1) ? "nondimensional" : luaL_checkstring(L, -1));

@@ -42,7 +42,9 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
     s->sides[k].kind = periodic[d] ? SIDE_PERIODIC : SIDE_WALL;
     s->sides[k].next = (size_t)s->g.n[1 - d];
     s->sides[k].ext = malloc(s->sides[k].next * sizeof(double));
-    if (!s->sides[k].ext) return -1;
+    /* the wall line and the ghost lines beyond it */
+    s->sides[k].acted = calloc((size_t)(s->g.pad + 1) * s->sides[k].next, 1);
+    if (!s->sides[k].ext || !s->sides[k].acted) return -1;
   }
   return 0;
 }
@@ -51,7 +53,10 @@ void sim_free(sim *s) {
   int k;
   grid_free(&s->g);
   particles_free(&s->ps);
-  for (k = 0; k < NSIDES; k++) free(s->sides[k].ext);
+  for (k = 0; k < NSIDES; k++) {
+    free(s->sides[k].ext);
+    free(s->sides[k].acted);
+  }
   free(s->mats);
   free(s->bodies);
   free(s->bmat);
@@ -278,6 +283,14 @@ double sim_next_dt(sim *s) {
   return dt;
 }
 
+int sim_wall_hold(const sim *s) {
+  int d;
+  if (s->wall_remap != WALL_REMAP_AUTO) return s->wall_remap == WALL_REMAP_HOLD;
+  for (d = 0; d < DIM; d++)
+    if (s->gravity[d] != 0) return 1;
+  return 0;
+}
+
 double sim_total(const sim *s) {
   return s->e.kinetic + s->e.strain + s->e.potential + s->e.lag;
 }
@@ -433,6 +446,7 @@ int sim_step(sim *s) {
     ** would strain particles by motion their momentum never lost, which
     ** measurably creates energy at impacts */
     solve_remap(s); /* g2p mapped the updated momenta back */
+    if (sim_wall_hold(s)) boundary_remap(s);
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
     prof_mark(s->prof, PROF_REMAP);

@@ -20,6 +20,9 @@
 
 enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
 enum update_kind { UPDATE_USL, UPDATE_MUSL };
+/* MUSL's remap at the walls (boundary_remap): auto holds them with
+** gravity on */
+enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC };
@@ -32,6 +35,8 @@ typedef struct side {
   double v[DIM];     /* wall velocity (tangential part moves the wall) */
   double *ext;       /* reach of material toward the wall per wall node */
   size_t next;
+  unsigned char *acted; /* per node of the wall line and the ghost lines:
+                        ** the wall acted there this step */
   double force[DIM]; /* force the wall put on the material, last step */
 } side;
 
@@ -101,6 +106,7 @@ typedef struct sim {
   double bond_area;  /* bonded interface area in the last step (length in
                         2-D), each interface counted once */
   int gap_check;     /* contact only once material surfaces meet */
+  int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
   double mcut;       /* nodal masses below this are empty */
   int sort_every;    /* steps between sorts by cell */
   size_t nremoved;   /* particles that left the domain */
@@ -198,6 +204,9 @@ void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
 void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
                                   remapped velocity (MUSL) */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
+void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */
+/* whether MUSL's remap holds the walls (boundary_remap) */
+int sim_wall_hold(const sim *s);
 void g2p(sim *s);              /* g2p.c: velocities; USL: positions, grad v;
                                   MUSL: momenta back to the grid */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */

@@ -36,7 +36,7 @@ for t in tests/fault/*.sh; do
   tail -1 "$log"
   count "$log"
 done
-"./$bin" test tests/verify/*.lua tests/random/gen.lua 2>&1 | tee "$log"
+"./$bin" test tests/verify/*.lua tests/hard/*.lua tests/random/gen.lua 2>&1 | tee "$log"
 rc=${PIPESTATUS[0]}
 count "$log"
 # a sanitizer report exits non-zero even when every check passed

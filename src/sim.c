@@ -441,10 +441,9 @@ int sim_step(sim *s) {
   g2p(s);
   prof_mark(s->prof, PROF_G2P);
   if (musl) {
-    /* the remap is not constrained again: the velocity gradient follows
-    ** what the particles do; a second wall or contact projection here
-    ** would strain particles by motion their momentum never lost, which
-    ** measurably creates energy at impacts */
+    /* the remap is not constrained again by contact: the velocity
+    ** gradient follows what the particles do; the walls only where the
+    ** scene holds them (boundary_remap says why and what it costs) */
     solve_remap(s); /* g2p mapped the updated momenta back */
     if (sim_wall_hold(s)) boundary_remap(s);
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);

@@ -166,11 +166,13 @@ local acc, nacc, reported = 0, 0, false
 -- at each record: the invariants (no NaN, det F > 0, no particle
 -- buried a cell deep in another body: sim:overlap, src/diag_overlap.c)
 local function sample(s, e, g, tau)
-  local n_ov, depth = s:overlap()
+  local n_ov, depth, ob, oh = s:overlap()
   if e.total ~= e.total or tau ~= tau then mon.bad[#mon.bad + 1] = string.format("NaN at strain %.4f", g) end
   if not (e.jmin > 0) then mon.bad[#mon.bad + 1] = string.format("J <= 0 at strain %.4f", g) end
   if n_ov > 0 then
-    mon.bad[#mon.bad + 1] = string.format("%d particles buried %d cells at strain %.4f", n_ov, depth, g)
+    local bodies = s:bodies()
+    mon.bad[#mon.bad + 1] = string.format("%d particles buried %d cells at strain %.4f (deepest: %s in %s)",
+      n_ov, depth, g, ob and bodies[ob].name or "?", oh and bodies[oh].name or "?")
   end
   mon.max_depth = math.max(mon.max_depth, depth)
   mon.jmin = math.min(mon.jmin, e.jmin)

@@ -60,6 +60,7 @@ void sim_free(sim *s) {
   free(s->flaw);
   par_free(s->par);
   bands_free(&s->bands);
+  marks_free(&s->marks);
   free(s->red);
   free(s->crec);
   free(s->cbody);
@@ -354,7 +355,7 @@ static void housekeeping(sim *s) {
     size_t ncell = 1;
     int d;
     for (d = 0; d < DIM; d++) ncell *= (size_t)s->g.cells[d];
-    particles_sort(ps, ps->cell, ncell);
+    particles_sort(ps, ps->cell, ncell, s->par);
   }
 }
 
@@ -403,6 +404,7 @@ int sim_step(sim *s) {
   prof_mark(s->prof, PROF_HOUSE);
   par_run(s->par, reset_part, &s->g);
   grid_reset_slots(&s->g);
+  p2g_plan(s);
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;

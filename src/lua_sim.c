@@ -574,7 +574,9 @@ static int lindex(lua_State *L) {
     setnum(L, "particles", (double)particles_mem(&s->ps));
     setnum(L, "threads", (double)(s->redcap + s->bands.nrows *
                                   (sizeof *s->bands.first + 1) +
-                                  marks_mem(&s->marks)));
+                                  marks_mem(&s->marks) +
+                                  (s->wext ? (size_t)(par_threads(s->par) - 1) *
+                                             s->wextn * sizeof *s->wext : 0)));
     setnum(L, "capacity", (double)s->ps.cap);
     setnum(L, "grid", (double)grid_mem(&s->g));
   }

@@ -62,6 +62,7 @@ void sim_free(sim *s) {
   bands_free(&s->bands);
   marks_free(&s->marks);
   free(s->red);
+  free(s->wext);
   free(s->crec);
   free(s->cbody);
   free(s->prof);
@@ -74,6 +75,8 @@ void sim_set_threads(sim *s, int n) {
   if (n == s->threads && s->par) return;
   par_free(s->par);
   s->par = NULL;
+  free(s->wext); /* sized by the thread count */
+  s->wext = NULL;
   s->threads = n;
 }
 
@@ -85,6 +88,17 @@ int sim_prepare(sim *s) {
   if (!s->par && !(s->par = par_new(s->threads))) {
     snprintf(s->err, sizeof s->err, "cannot start %d threads", s->threads);
     return -1;
+  }
+  if (!s->wext && par_threads(s->par) > 1) { /* reach.c: walls */
+    int k;
+    s->wextn = 0;
+    for (k = 0; k < NSIDES; k++) s->wextn += s->sides[k].next;
+    s->wext = malloc((size_t)(par_threads(s->par) - 1) * s->wextn *
+                     sizeof *s->wext);
+    if (!s->wext) {
+      snprintf(s->err, sizeof s->err, "out of memory for partial sums");
+      return -1;
+    }
   }
   if (need > s->redcap) {
     size_t cap = s->redcap ? 2 * s->redcap : SIM_RED_BYTES * 64;

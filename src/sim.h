@@ -123,6 +123,9 @@ typedef struct sim {
   marks marks;       /* shared-node marking's room (mark.h) */
   void *red;         /* per-chunk partial sums of the threaded phases */
   size_t redcap;     /* ... its bytes */
+  double *wext;      /* reach.c: each thread but the first's copy of the
+                        sides' reach arrays, wextn doubles each */
+  size_t wextn;
   /* contact.c's records of a threaded pass, added up in node order after
   ** it: per shared node the driven body's force and work (cbody -1:
   ** none) */

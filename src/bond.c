@@ -115,8 +115,9 @@ typedef struct pass_job { sim *s; int pass; } pass_job;
 
 static void gather_part(void *arg, int t, int nparts) {
   pass_job *j = arg;
-  const bands *b = &j->s->bands;
-  gather(j->s, b->i[t], b->i[t + 1], t, j->pass);
+  size_t i0, i1;
+  bands_span(&j->s->bands, t, j->pass, &i0, &i1);
+  gather(j->s, i0, i1, t, j->pass);
 }
 
 /* a node's strength is that of the particles it owns; a node owning

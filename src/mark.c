@@ -131,8 +131,8 @@ typedef struct mark_job { sim *s; int split, pass; } mark_job;
 static void mark_part(void *arg, int t, int nparts) {
   mark_job *j = arg;
   sim *s = j->s;
-  size_t i0 = j->split ? s->bands.i[t] : 0;
-  size_t i1 = j->split ? s->bands.i[t + 1] : s->ps.n;
+  size_t i0 = 0, i1 = s->ps.n;
+  if (j->split) bands_span(&s->bands, t, j->pass, &i0, &i1);
   switch (s->shape) {
   case SHAPE_GIMP: mark_kind(s, SHAPE_GIMP, j->split, t, j->pass, i0, i1); break;
   case SHAPE_BSPLINE2:

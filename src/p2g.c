@@ -111,8 +111,9 @@ typedef struct pass_job { sim *s; int pass; } pass_job;
 
 static void p2g_part(void *arg, int t, int nparts) {
   pass_job *j = arg;
-  const bands *b = &j->s->bands;
-  p2g_range(j->s, 1, b->i[t], b->i[t + 1], t, j->pass);
+  size_t i0, i1;
+  bands_span(&j->s->bands, t, j->pass, &i0, &i1);
+  p2g_range(j->s, 1, i0, i1, t, j->pass);
 }
 
 /* the plan is made from the positions the step starts with, and serves

@@ -88,9 +88,10 @@ static void shared_part(void *arg, int t, int nparts) {
   const bands *b = &j->s->bands;
   stencil_geo geo;
   unsigned char mine[SHAPE_MAXW];
-  size_t i;
+  size_t i, i0, i1;
   stencil_geo_init(&geo, &j->s->g);
-  for (i = b->i[t]; i < b->i[t + 1]; i++)
+  bands_span(b, t, j->pass, &i0, &i1);
+  for (i = i0; i < i1; i++)
     if (bands_rows(b, &geo, j->s->shape, j->s->ps.x[BANDS_DIM][i], t,
                    j->pass, mine))
       shared(j->s, i, t, j->pass);

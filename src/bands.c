@@ -44,6 +44,26 @@ static void reach_part(void *arg, int t, int nparts) {
   b->hi[t] = hi == INT_MIN ? hi : hi + shape_width(j->kind) - 1;
 }
 
+/* part t: the first and last particle with a node row that part t
+** writes in pass 2, so that pass 2 looks at those alone */
+static void span_part(void *arg, int t, int nparts) {
+  reach_job *j = arg;
+  bands *b = j->b;
+  const int nw = shape_width(j->kind);
+  size_t i, j0 = b->i[t + 1], j1 = b->i[t];
+  for (i = b->i[t]; i < b->i[t + 1]; i++) {
+    int r = stencil_first(&j->geo, j->kind, BANDS_DIM, j->y[i]), k;
+    for (k = 0; k < nw; k++)
+      if (b->first[stencil_wrap(&j->geo, BANDS_DIM, r + k)] != t) {
+        if (i < j0) j0 = i;
+        j1 = i + 1;
+        break;
+      }
+  }
+  b->j[t][0] = j0 < j1 ? j0 : b->i[t];
+  b->j[t][1] = j0 < j1 ? j1 : b->i[t];
+}
+
 void bands_plan(bands *b, par *p, const grid *g, int kind, const double *y,
                 size_t n) {
   int nb = par_threads(p), t, r;
@@ -68,6 +88,7 @@ void bands_plan(bands *b, par *p, const grid *g, int kind, const double *y,
       else if (b->count[w] > 2) return; /* one pass in order */
     }
   }
+  par_run(p, span_part, &j);
   b->nb = nb;
   b->split++;
 }

@@ -33,6 +33,8 @@ typedef struct bands {
   int nb;               /* parts; 0: one pass over all in order */
   size_t i[PAR_MAX + 1]; /* part b holds particles i[b] .. i[b + 1] - 1 */
   int lo[PAR_MAX], hi[PAR_MAX]; /* node rows part b reaches, unwrapped */
+  size_t j[PAR_MAX][2]; /* part b's particles with rows in pass 2: kept
+                           sorted, a few at the lower edge */
   int32_t *first;       /* per node row: the first part that reaches it */
   unsigned char *count; /* per node row: the parts that reach it */
   int nrows;
@@ -46,6 +48,14 @@ void bands_free(bands *b);
 ** into par_threads(p) parts (none with one thread); sets b->nb */
 void bands_plan(bands *b, par *p, const grid *g, int kind, const double *y,
                 size_t n);
+
+/* the particles part blk looks at in a pass: all of its own in pass 1,
+** in pass 2 only the stretch that has rows to write */
+static inline void bands_span(const bands *b, int blk, int pass, size_t *i0,
+                              size_t *i1) {
+  *i0 = pass == 1 ? b->i[blk] : b->j[blk][0];
+  *i1 = pass == 1 ? b->i[blk + 1] : b->j[blk][1];
+}
 
 /* For a particle of part blk at coordinate y: per stencil row k, whether
 ** this pass writes it (pass 1 or 2); nonzero if any row is written. */

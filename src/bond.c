@@ -27,6 +27,8 @@
 ** it is cut itself.
 */
 #include <math.h>
+#include "bands.h"
+#include "par.h"
 #include "sim.h"
 #include "stencil.h"
 
@@ -55,16 +57,24 @@ static int32_t nearest(const grid *g, const double *x) {
   return node;
 }
 
-void bond_gather(sim *s) {
+/* Particles [i0, i1) into the slots of their shared nodes: strength,
+** volume gradient, and the strength and mass each nearest node owns.
+** With a plan (blk >= 0) only into the node rows this pass writes
+** (bands.h): the sums then come in the particles' order whatever the
+** thread count.  The nearest node is one of the stencil's, in its row
+** first + (nearest row - first row). */
+static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double *bp = particles_comp(ps, s->fbond, 0);
+  const int nw = shape_width(s->shape);
+  unsigned char mine[SHAPE_MAXW];
   stencil st;
   size_t i, k;
   stencil_geo geo;
   stencil_geo_init(&geo, g);
-  for (i = 0; i < ps->n; i++) {
+  for (i = i0; i < i1; i++) {
     double x[DIM], mp = ps->m[i], V;
     int32_t node[STENCIL_MAX], f = bd[ps->body[i]].field, own;
     int nn, d, any = 0;
@@ -72,39 +82,79 @@ void bond_gather(sim *s) {
     nn = stencil_nodes(g, s->shape, x, node);
     for (k = 0; k < (size_t)nn && !any; k++) any = g->head[node[k]] >= 0;
     if (!any) continue;
+    if (blk >= 0 &&
+        !bands_rows(&s->bands, &geo, s->shape, x[BANDS_DIM], blk, pass, mine))
+      continue;
     eval(s, &geo, x, &st);
 #if DIM == 2
     V = ps->vol0[i] * (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
 #endif
     for (k = 0; k < (size_t)st.n; k++) {
       int32_t n = st.node[k], sl;
-      if (g->head[n] < 0) continue;
+      if (g->head[n] < 0 || (blk >= 0 && !mine[k / nw])) continue;
       sl = grid_slot(g, n, f);
       g->sb[sl] += st.w[k] * mp * bp[i];
       for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
     }
     own = nearest(g, x);
+    if (blk >= 0) {
+      int r = (int)floor((x[BANDS_DIM] - g->lo[BANDS_DIM]) * g->inv_h + 0.5) +
+              (g->periodic[BANDS_DIM] ? 0 : g->pad);
+      if (!mine[r - stencil_first(&geo, s->shape, BANDS_DIM, x[BANDS_DIM])])
+        continue;
+    }
     if (g->head[own] >= 0) {
       int32_t sl = grid_slot(g, own, f);
       g->sbo[sl] += mp * bp[i];
       g->smo[sl] += mp;
     }
   }
-  /* a node's strength is that of the particles it owns; a node owning
-  ** none of the field (a sliver of the body reaching it) takes the
-  ** weighted mean of the particles that reach it */
-  for (k = 0; k < g->nslot; k++)
+}
+
+typedef struct pass_job { sim *s; int pass; } pass_job;
+
+static void gather_part(void *arg, int t, int nparts) {
+  pass_job *j = arg;
+  size_t i0, i1;
+  bands_span(&j->s->bands, t, j->pass, &i0, &i1);
+  gather(j->s, i0, i1, t, j->pass);
+}
+
+/* a node's strength is that of the particles it owns; a node owning
+** none of the field (a sliver of the body reaching it) takes the
+** weighted mean of the particles that reach it */
+static void strength_part(void *arg, int t, int nparts) {
+  grid *g = arg;
+  size_t k, k0, k1;
+  par_range(g->nslot, t, nparts, &k0, &k1);
+  for (k = k0; k < k1; k++)
     g->sb[k] = g->smo[k] > 0 ? g->sbo[k] / g->smo[k]
                : g->sm[k] > 0 ? g->sb[k] / g->sm[k] : 0.0;
 }
 
-void bond_scatter(sim *s) {
+/* over the plan p2g made: the particles have not moved since */
+void bond_gather(sim *s) {
+  if (s->bands.nb) {
+    pass_job j = {s, 1};
+    par_run(s->par, gather_part, &j);
+    j.pass = 2;
+    par_run(s->par, gather_part, &j);
+  } else
+    gather(s, 0, s->ps.n, -1, 1);
+  par_run(s->par, strength_part, &s->g);
+}
+
+/* particles whose nearest node was cut lose their strength: each
+** particle writes only its own */
+static void scatter_part(void *arg, int t, int nparts) {
+  sim *s = arg;
   const grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   double *bp = particles_comp(ps, s->fbond, 0);
-  size_t i;
-  for (i = 0; i < ps->n; i++) {
+  size_t i, i0, i1;
+  par_range(ps->n, t, nparts, &i0, &i1);
+  for (i = i0; i < i1; i++) {
     double x[DIM];
     int32_t own;
     int d;
@@ -117,6 +167,8 @@ void bond_scatter(sim *s) {
       bp[i] = 0.0;
   }
 }
+
+void bond_scatter(sim *s) { par_run(s->par, scatter_part, s); }
 
 /* A bonded interface is one body for the step: under MUSL the velocity
 ** gradient comes from the particles' remapped velocities, and a bonded

@@ -44,8 +44,8 @@
 
 #define MAXSLOTS 64
 /* a node's record in a threaded pass: the driven body's force (DIM) and
-** work, and the friction work */
-#define CREC (DIM + 2)
+** work, the friction work, and the bonds cut (a count) */
+#define CREC (DIM + 3)
 
 /* normals of the shared nodes [k0, k1): each node reads and writes only
 ** its own slots, so parts cut anywhere give the same numbers */
@@ -145,6 +145,17 @@ static double traction(const grid *g, int32_t n, int32_t sl, int drv) {
   return A > 0 ? F / A : 0;
 }
 
+/* the strength slot sl has left in this pass: none once cut.  A cut is
+** only recorded (scut) while the pass runs, and sb is cleared after it
+** (bond_sums), so that every node's traction reads its neighbours'
+** strengths as the pass began: the nodes do not depend on each other's
+** order and are cut among the threads.  (Cleared at once, a cut would
+** pass on to the nodes after it in the same sweep, and a debonding could
+** run along the sweep's direction within one step.) */
+static double left(const grid *g, int32_t sl) {
+  return g->scut[sl] > 0 ? 0.0 : g->sb[sl];
+}
+
 /*
 ** Bonds (the report's rule).  Where field r and its partner o both carry
 ** bond strength and their law lets them bond, the interface is bonded
@@ -154,28 +165,23 @@ static double traction(const grid *g, int32_t n, int32_t sl, int drv) {
 ** reference velocity (perfect bonding, as on one field).  When t > b the
 ** node's strength on both sides is cut to zero, the cut recorded for
 ** bond_scatter, and the interface is treated as debonded contact from
-** this step on.  Returns 1 if bonded.
+** this step on.  Returns 1 if bonded, 0 if not, -1 if cut now.
 */
 static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
   grid *g = &s->g;
   const pairlaw *l;
-  double b, t, cap;
-  if (!(g->sb[sl] > 0) || !(g->sb[o] > 0 || odriven)) return 0;
+  double b, t, cap, bs = left(g, sl), bo = left(g, o);
+  if (!(bs > 0) || !(bo > 0 || odriven)) return 0;
   l = sim_law_of(s, g->sfield[sl], g->sfield[o]);
   cap = l ? l->bond : s->bond_default;
   if (!(cap > 0)) return 0;
-  b = odriven || g->sb[sl] < g->sb[o] ? g->sb[sl] : g->sb[o];
+  b = odriven || bs < bo ? bs : bo;
   t = traction(g, n, sl, odriven);
   if (cap < b) b = cap;
   if (t <= b) return 1;
-  g->scut[sl] += g->sb[sl];
-  g->sb[sl] = 0;
-  if (!odriven) {
-    g->scut[o] += g->sb[o];
-    g->sb[o] = 0;
-  }
-  s->ncut++;
-  return 0;
+  g->scut[sl] += bs;
+  if (!odriven) g->scut[o] += bo;
+  return -1;
 }
 
 /* what slot sl's friction impulse c dissipates: minus its work on the
@@ -192,6 +198,18 @@ static double lose(const grid *g, int32_t sl, const double vref[DIM],
   return -w / mr;
 }
 
+/* node k's friction work and bonds cut: recorded (a threaded pass) or
+** added now */
+static void booked(sim *s, size_t k, double fric, int cuts, int rec) {
+  if (rec) {
+    s->crec[CREC * k + DIM + 1] = fric;
+    s->crec[CREC * k + DIM + 2] = cuts;
+  } else {
+    s->e.friction += fric;
+    s->ncut += (size_t)cuts;
+  }
+}
+
 /* the correction at shared node k; rec: record the driven body's force
 ** and work for contact_apply to add up in order (a threaded pass) */
 static void node(sim *s, size_t k0, double *const mom[DIM],
@@ -205,7 +223,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   double sb[DIM] = {0}, sc[DIM] = {0}, st[DIM] = {0}, vref[DIM], M = g->m[n];
   double fric = 0;
   int32_t sl, slots[MAXSLOTS], drv = -1;
-  int ns = 0, k, d, bonds = s->fbond >= 0;
+  int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
   if (rec) s->cbody[k0] = -1;
   if (M <= s->mcut) return;
   for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl]) {
@@ -239,18 +257,21 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       if (g->sm[q] > mo) { mo = g->sm[q]; o = q; }
     }
     if (drv >= 0) o = drv;
-    if (bonds && bonded(s, n, sl, o, drv >= 0)) {
-      /* no energy is booked for it: the fields' nodal velocities differ
-      ** only by how the particles sample them, as on one shared field,
-      ** and FLIP keeps each particle's own motion (measured: booking
-      ** sum |dp|^2 / 2m as lost left the budget short by exactly that) */
-      for (d = 0; d < DIM; d++) {
-        cb[k][d] = -dp[d];
-        sb[d] += cb[k][d];
+    if (bonds) {
+      int b = bonded(s, n, sl, o, drv >= 0);
+      cuts += b < 0;
+      if (b > 0) {
+        /* no energy is booked for it: the fields' nodal velocities differ
+        ** only by how the particles sample them, as on one shared field,
+        ** and FLIP keeps each particle's own motion (measured: booking
+        ** sum |dp|^2 / 2m as lost left the budget short by exactly that) */
+        for (d = 0; d < DIM; d++) {
+          cb[k][d] = -dp[d];
+          sb[d] += cb[k][d];
+        }
+        g->sbonded[sl] = 1;
+        continue;
       }
-      g->sbonded[sl] = 1;
-      s->bond_area += 0.5 * area(g, sl);
-      continue;
     }
     if (!(dn > 0)) continue;
     if (s->gap_check && g->sext[sl] + other < 0) continue;
@@ -301,8 +322,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       }
       fric += lose(g, sl, vref, post, ct[k]);
     }
-    if (rec) s->crec[CREC * k0 + DIM + 1] = fric;
-    else s->e.friction += fric;
+    booked(s, k0, fric, cuts, rec);
     return;
   }
   /* momentum-conserving: remove the residual in proportion to mass */
@@ -318,8 +338,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     }
     fric += lose(g, sl, vref, post, ct[k]);
   }
-  if (rec) s->crec[CREC * k0 + DIM + 1] = fric;
-  else s->e.friction += fric;
+  booked(s, k0, fric, cuts, rec);
 }
 
 /* Room for the records of a threaded pass, one per slot and per shared
@@ -362,6 +381,7 @@ static void apply_sums(sim *s) {
     int d;
     if (g->m[g->shared[k]] <= s->mcut) continue;
     s->e.friction += r[DIM + 1];
+    s->ncut += (size_t)r[DIM + 2];
     if (s->cbody[k] >= 0) {
       double *F = s->bodies[s->cbody[k]].force;
       for (d = 0; d < DIM; d++) F[d] += r[d];
@@ -370,20 +390,35 @@ static void apply_sums(sim *s) {
   }
 }
 
-/* Without bonds each node's correction reads and writes only its own node
-** and slots, so the nodes are cut among the threads.  With bonds the
-** traction reads neighbouring nodes' strengths, which a debonding cuts:
-** that pass stays in order, as does a call without contact_prepare's
-** room (both give the same numbers). */
+/* After a pass with bonds, node by node and slot by slot in list order:
+** the bonded area (each interface counted once: half of each side's),
+** and the strengths cut in the pass cleared (see left()) */
+static void bond_sums(sim *s) {
+  grid *g = &s->g;
+  size_t k;
+  for (k = 0; k < g->nshared; k++) {
+    int32_t sl;
+    for (sl = g->head[g->shared[k]]; sl >= 0; sl = g->snext[sl]) {
+      if (g->sbonded[sl]) s->bond_area += 0.5 * area(g, sl);
+      if (g->scut[sl] > 0) g->sb[sl] = 0;
+    }
+  }
+}
+
+/* Each node's correction writes only its own node and slots, and reads
+** other nodes only for the bond traction, which takes their strengths
+** as the pass began (left()): the nodes are cut among the threads.  A
+** call without contact_prepare's room takes them in order, with the
+** same numbers. */
 void contact_apply(sim *s) {
   grid *g = &s->g;
   size_t k;
   s->ncut = 0;
   s->bond_area = 0;
-  if (s->fbond < 0 && s->cnodecap >= g->nshared) {
+  if (s->cnodecap >= g->nshared) {
     par_run(s->par, apply_part, s);
     apply_sums(s);
-    return;
-  }
-  for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);
+  } else
+    for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);
+  if (s->fbond >= 0) bond_sums(s);
 }

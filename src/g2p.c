@@ -346,14 +346,16 @@ static void move_part(void *arg, int t, int nparts) {
   }
 }
 
-/* MUSL pass 1 with a plan: part t gathers and maps back at its rows */
+/* MUSL pass 1 with a plan: part t gathers and maps back at its rows,
+** then (the plan's pass 2) at the rows of the part before */
 static void split_part(void *arg, int t, int nparts) {
   g2p_job *j = arg;
-  const bands *b = &j->s->bands;
+  size_t i0, i1;
+  bands_span(&j->s->bands, t, j->mode == G2P_SCATTER1 ? 1 : 2, &i0, &i1);
   if (j->mode == G2P_SCATTER1)
-    g2p_range(j->s, G2P_SCATTER1, b->i[t], b->i[t + 1], t, NULL);
+    g2p_range(j->s, G2P_SCATTER1, i0, i1, t, NULL);
   else
-    scatter_range(j->s, 1, b->i[t], b->i[t + 1], t);
+    scatter_range(j->s, 1, i0, i1, t);
 }
 
 /* MUSL pass 1 without a plan: the gather only, cut anywhere */

@@ -131,40 +131,35 @@ static int slots_grow(grid *g) {
   return 0;
 }
 
-static int32_t slot_new(grid *g, int32_t node, int32_t field) {
-  int32_t s;
-  int d;
-  if (g->nslot == g->slotcap && slots_grow(g)) return -1;
-  s = (int32_t)g->nslot++;
-  g->sfield[s] = field;
-  g->snode[s] = node;
-  g->snext[s] = g->head[node];
-  g->head[node] = s;
-  g->sm[s] = 0;
-  g->sext[s] = -1e300;
-  g->sb[s] = g->scut[s] = 0;
-  g->sbonded[s] = 0;
-  g->sbo[s] = g->smo[s] = 0;
-  for (d = 0; d < DIM; d++) g->sv[d][s] = 0;
-  for (d = 0; d < DIM; d++) {
-    g->sp[d][s] = g->sf[d][s] = g->sq[d][s] = g->sg[d][s] = 0;
-    g->sn[d][s] = 0;
+int grid_slots_reserve(grid *g, size_t nslot, size_t nshared) {
+  while (g->slotcap < nslot)
+    if (slots_grow(g)) return -1;
+  if (g->sharedcap < nshared) {
+    size_t cap = g->sharedcap ? 2 * g->sharedcap : 1024;
+    while (cap < nshared) cap *= 2;
+    GROW(g->shared, int32_t, cap);
+    g->sharedcap = cap;
   }
-  return s;
+  return 0;
 }
 
-int32_t grid_slot_add(grid *g, int32_t node, int32_t field) {
-  int32_t s;
-  if (g->head[node] < 0) { /* becoming shared: the owner gets a slot too */
-    if (g->nshared == g->sharedcap) {
-      size_t cap = g->sharedcap ? 2 * g->sharedcap : 1024;
-      GROW(g->shared, int32_t, cap);
-      g->sharedcap = cap;
-    }
-    g->shared[g->nshared++] = node;
-    if (slot_new(g, node, g->owner[node]) < 0) return -1;
+/* whole arrays at a time: the slots of a part are consecutive */
+void grid_slots_clear(grid *g, size_t s0, size_t s1) {
+  size_t n = (s1 - s0) * sizeof(double), s;
+  int d;
+  memset(g->sm + s0, 0, n);
+  for (s = s0; s < s1; s++) g->sext[s] = -1e300;
+  memset(g->sb + s0, 0, n);
+  memset(g->scut + s0, 0, n);
+  memset(g->sbonded + s0, 0, s1 - s0);
+  memset(g->sbo + s0, 0, n);
+  memset(g->smo + s0, 0, n);
+  for (d = 0; d < DIM; d++) {
+    memset(g->sv[d] + s0, 0, n);
+    memset(g->sp[d] + s0, 0, n);
+    memset(g->sf[d] + s0, 0, n);
+    memset(g->sq[d] + s0, 0, n);
+    memset(g->sg[d] + s0, 0, n);
+    memset(g->sn[d] + s0, 0, n);
   }
-  for (s = g->head[node]; s >= 0; s = g->snext[s])
-    if (g->sfield[s] == field) return s;
-  return slot_new(g, node, field);
 }

@@ -67,8 +67,13 @@ void grid_reset(grid *g, int clear_q);
 ** may clear parts at once), and the slot table */
 void grid_clear(grid *g, size_t i0, size_t i1, int clear_q);
 void grid_reset_slots(grid *g);
-/* the slot of field f at node, creating it; -1 if out of memory */
-int32_t grid_slot_add(grid *g, int32_t node, int32_t field);
+/* room for nslot slots and nshared shared nodes (grown by doubling, so
+** that after the first steps no step allocates); 0 or -1 (out of memory).
+** Marking (mark.c) fills them: it sets nslot, nshared, the list and the
+** links, and clears the sums with grid_slots_clear */
+int grid_slots_reserve(grid *g, size_t nslot, size_t nshared);
+/* zero the sums of slots [s0, s1) (threads may clear parts at once) */
+void grid_slots_clear(grid *g, size_t s0, size_t s1);
 /* the slot of field f at a shared node (must exist) */
 static inline int32_t grid_slot(const grid *g, int32_t node, int32_t field) {
   int32_t s = g->head[node];

@@ -577,7 +577,10 @@ static int lindex(lua_State *L) {
     lua_createtable(L, 0, 4);
     setnum(L, "particles", (double)particles_mem(&s->ps));
     setnum(L, "threads", (double)(s->redcap + s->bands.nrows *
-                                  (sizeof *s->bands.first + 1)));
+                                  (sizeof *s->bands.first + 1) +
+                                  marks_mem(&s->marks) +
+                                  (s->wext ? (size_t)(par_threads(s->par) - 1) *
+                                             s->wextn * sizeof *s->wext : 0)));
     setnum(L, "capacity", (double)s->ps.cap);
     setnum(L, "grid", (double)grid_mem(&s->g));
   }

@@ -11,36 +11,6 @@
 #include "par.h"
 #include "stencil.h"
 
-/* Shared nodes: a node is shared when particles of two fields reach it.
-** The first field seen owns the node; the second creates slots.  The
-** first node fixes the whole stencil, and particles sorted by cell come
-** in runs with the same first node and field: marking again is a no-op,
-** so a run is marked once. */
-int p2g_mark(sim *s) {
-  grid *g = &s->g;
-  const particles *ps = &s->ps;
-  const body *bd = s->bodies;
-  int32_t node[STENCIL_MAX], last = -1, lastf = -1;
-  size_t i;
-  for (i = 0; i < ps->n; i++) {
-    int32_t f = bd[ps->body[i]].field;
-    double x[DIM];
-    int k, nn, d;
-    for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    nn = stencil_nodes(g, s->shape, x, node);
-    if (node[0] == last && f == lastf) continue;
-    last = node[0];
-    lastf = f;
-    for (k = 0; k < nn; k++) {
-      int32_t o = g->owner[node[k]];
-      if (o == f) continue;
-      if (o < 0) g->owner[node[k]] = f;
-      else if (grid_slot_add(g, node[k], f) < 0) return -1;
-    }
-  }
-  return 0;
-}
-
 /*
 ** The scatter of particles [i0, i1) (part blk of the bands plan).
 ** split: only the node rows this pass writes (bands.h); otherwise all.
@@ -141,15 +111,20 @@ typedef struct pass_job { sim *s; int pass; } pass_job;
 
 static void p2g_part(void *arg, int t, int nparts) {
   pass_job *j = arg;
-  const bands *b = &j->s->bands;
-  p2g_range(j->s, 1, b->i[t], b->i[t + 1], t, j->pass);
+  size_t i0, i1;
+  bands_span(&j->s->bands, t, j->pass, &i0, &i1);
+  p2g_range(j->s, 1, i0, i1, t, j->pass);
 }
 
-/* the plan is made here, from the positions the step starts with, and
-** serves the MUSL scatter of g2p too (the particles have not moved) */
+/* the plan is made from the positions the step starts with, and serves
+** the marking, the scatter and the scatters of reach and g2p (the
+** particles do not move before g2p's last pass) */
+void p2g_plan(sim *s) {
+  bands_plan(&s->bands, s->par, &s->g, s->shape, s->ps.x[BANDS_DIM], s->ps.n);
+}
+
 void p2g(sim *s) {
   bands *b = &s->bands;
-  bands_plan(b, s->par, &s->g, s->shape, s->ps.x[BANDS_DIM], s->ps.n);
   if (b->nb) {
     pass_job j = {s, 1};
     par_run(s->par, p2g_part, &j);

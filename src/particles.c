@@ -3,6 +3,7 @@
 */
 #include <stdlib.h>
 #include <string.h>
+#include "par.h"
 #include "particles.h"
 
 static const char *xyz[] = {"x", "y", "z"};
@@ -149,13 +150,38 @@ size_t particles_push(particles *ps) {
 ** order and the result is the same on every run.  Each array is gathered
 ** into the scratch buffer and the two pointers are swapped.
 */
-int particles_sort(particles *ps, const int32_t *key, size_t ncell) {
+/* one array of the sort: dst[j] = src[from[j]] over part t of the
+** destinations (a gather: each thread writes a stretch of its own) */
+typedef struct move_job {
+  const void *src;
+  void *dst;
+  const size_t *from;
+  size_t n;
+  int type;
+} move_job;
+
+static void move_part(void *arg, int t, int nparts) {
+  const move_job *j = arg;
+  size_t i, i0, i1;
+  par_range(j->n, t, nparts, &i0, &i1);
+  if (j->type == PF_INT32) {
+    const int32_t *a = j->src;
+    int32_t *b = j->dst;
+    for (i = i0; i < i1; i++) b[i] = a[j->from[i]];
+  } else {
+    const double *a = j->src;
+    double *b = j->dst;
+    for (i = i0; i < i1; i++) b[i] = a[j->from[i]];
+  }
+}
+
+int particles_sort(particles *ps, const int32_t *key, size_t ncell, par *p) {
   size_t i, k, sum = 0;
   int f, c;
   if (ncell + 1 > ps->ncount) {
-    size_t *p = realloc(ps->count, (ncell + 1) * sizeof *p);
-    if (!p) return -1;
-    ps->count = p;
+    size_t *q = realloc(ps->count, (ncell + 1) * sizeof *q);
+    if (!q) return -1;
+    ps->count = q;
     ps->ncount = ncell + 1;
   }
   memset(ps->count, 0, (ncell + 1) * sizeof *ps->count);
@@ -166,23 +192,15 @@ int particles_sort(particles *ps, const int32_t *key, size_t ncell) {
     sum += t;
   }
   ps->count[ncell] = sum;
-  for (i = 0; i < ps->n; i++) ps->perm[i] = ps->count[key[i]]++;
+  /* where each place's particle comes from: stable, as i runs in order */
+  for (i = 0; i < ps->n; i++) ps->perm[ps->count[key[i]]++] = i;
   for (f = 0; f < ps->nfields; f++)
     for (c = 0; c < ps->fields[f].ncomp; c++) {
       void **slot = ps->fields[f].slot[c];
-      void *tmp;
-      if (ps->fields[f].type == PF_INT32) {
-        const int32_t *a = *slot;
-        int32_t *b = ps->scratch;
-        for (i = 0; i < ps->n; i++) b[ps->perm[i]] = a[i];
-      } else {
-        const double *a = *slot;
-        double *b = ps->scratch;
-        for (i = 0; i < ps->n; i++) b[ps->perm[i]] = a[i];
-      }
-      tmp = *slot;
+      move_job j = {*slot, ps->scratch, ps->perm, ps->n, ps->fields[f].type};
+      par_run(p, move_part, &j);
       *slot = ps->scratch;
-      ps->scratch = tmp;
+      ps->scratch = (void *)j.src;
     }
   return 0;
 }

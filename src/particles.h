@@ -52,7 +52,7 @@ typedef struct particles {
   pfield fields[PF_MAXFIELDS];
   int nfields;
   void *scratch;       /* cap * 8 bytes, for sorting */
-  size_t *perm;        /* cap destinations, for sorting */
+  size_t *perm;        /* cap sources, for sorting */
   size_t *count;       /* per-cell counts for the sort, ncell + 1 */
   size_t ncount;
 } particles;
@@ -74,8 +74,12 @@ static inline void *particles_comp(const particles *ps, int f, int c) {
 }
 /* append one particle with zeroed state and F = I; returns its index */
 size_t particles_push(particles *ps);
-/* stable counting sort by cell index (key[i] in [0, ncell)) */
-int particles_sort(particles *ps, const int32_t *key, size_t ncell);
+/* stable counting sort by cell index (key[i] in [0, ncell)); the arrays
+** are moved by the threads of p (NULL: the caller), each taking a
+** stretch of destinations, so the result does not depend on how many */
+struct par;
+int particles_sort(particles *ps, const int32_t *key, size_t ncell,
+                   struct par *p);
 /* bytes the store holds: every array at capacity, and the sort buffers */
 size_t particles_mem(const particles *ps);
 /* drop particles with keep[i] == 0, keeping order */

@@ -13,13 +13,14 @@
 #include "sim.h"
 #include "stencil.h"
 
-static void walls(sim *s, size_t i) {
+/* particle i's reach toward the walls, into ext (one array per side) */
+static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
   const grid *g = &s->g;
   const particles *ps = &s->ps;
   const double l = s->lp * g->h;
   int k;
   for (k = 0; k < NSIDES; k++) {
-    side *sd = &s->sides[k];
+    const side *sd = &s->sides[k];
     int d = k / 2, hi = k & 1, o = 1 - d; /* o: the other dimension (2-D) */
     double xw, r, xi;
     int i0, a, nw;
@@ -35,7 +36,7 @@ static void walls(sim *s, size_t i) {
                                   : (int)floor(xi - 0.5);
     for (a = 0; a < nw; a++) {
       int j = grid_wrap(g, o, i0 + a);
-      if (j >= 0 && (size_t)j < sd->next && r > sd->ext[j]) sd->ext[j] = r;
+      if (j >= 0 && (size_t)j < sd->next && r > ext[k][j]) ext[k][j] = r;
     }
   }
 }
@@ -87,12 +88,49 @@ static void shared_part(void *arg, int t, int nparts) {
   const bands *b = &j->s->bands;
   stencil_geo geo;
   unsigned char mine[SHAPE_MAXW];
-  size_t i;
+  size_t i, i0, i1;
   stencil_geo_init(&geo, &j->s->g);
-  for (i = b->i[t]; i < b->i[t + 1]; i++)
+  bands_span(b, t, j->pass, &i0, &i1);
+  for (i = i0; i < i1; i++)
     if (bands_rows(b, &geo, j->s->shape, j->s->ps.x[BANDS_DIM][i], t,
                    j->pass, mine))
       shared(j->s, i, t, j->pass);
+}
+
+/* The walls, part t of the particles: part 0 into the sides' own
+** arrays, the others each into a copy of its own (s->wext), merged after:
+** a maximum does not depend on the order it is taken in */
+static void walls_part(void *arg, int t, int nparts) {
+  sim *s = arg;
+  double *ext[NSIDES], *w = t > 0 ? s->wext + (size_t)(t - 1) * s->wextn : NULL;
+  size_t i, i0, i1, j;
+  int k;
+  for (k = 0; k < NSIDES; k++) {
+    side *sd = &s->sides[k];
+    ext[k] = sd->ext;
+    if (t > 0) {
+      ext[k] = w;
+      w += sd->next;
+    }
+    if (sd->kind == SIDE_WALL)
+      for (j = 0; j < sd->next; j++) ext[k][j] = -1e300;
+  }
+  par_range(s->ps.n, t, nparts, &i0, &i1);
+  for (i = i0; i < i1; i++) walls(s, i, ext);
+}
+
+static void walls_merge(sim *s) {
+  const double *w = s->wext;
+  int t, k;
+  for (t = 1; t < par_threads(s->par); t++)
+    for (k = 0; k < NSIDES; k++) {
+      side *sd = &s->sides[k];
+      size_t j;
+      if (sd->kind == SIDE_WALL)
+        for (j = 0; j < sd->next; j++)
+          if (w[j] > sd->ext[j]) sd->ext[j] = w[j];
+      w += sd->next;
+    }
 }
 
 void reach(sim *s) {
@@ -100,14 +138,11 @@ void reach(sim *s) {
   const bands *b = &s->bands;
   int k, anywall = 0;
   size_t i;
-  for (k = 0; k < NSIDES; k++)
-    if (s->sides[k].kind == SIDE_WALL) {
-      size_t j;
-      anywall = 1;
-      for (j = 0; j < s->sides[k].next; j++) s->sides[k].ext[j] = -1e300;
-    }
-  if (anywall)
-    for (i = 0; i < ps->n; i++) walls(s, i);
+  for (k = 0; k < NSIDES; k++) anywall |= s->sides[k].kind == SIDE_WALL;
+  if (anywall) {
+    par_run(s->par, walls_part, s);
+    walls_merge(s);
+  }
   if (!s->g.nshared) return;
   if (b->nb) {
     pass_job j = {s, 1};

@@ -65,7 +65,9 @@ void sim_free(sim *s) {
   free(s->flaw);
   par_free(s->par);
   bands_free(&s->bands);
+  marks_free(&s->marks);
   free(s->red);
+  free(s->wext);
   free(s->crec);
   free(s->cbody);
   free(s->prof);
@@ -78,6 +80,8 @@ void sim_set_threads(sim *s, int n) {
   if (n == s->threads && s->par) return;
   par_free(s->par);
   s->par = NULL;
+  free(s->wext); /* sized by the thread count */
+  s->wext = NULL;
   s->threads = n;
 }
 
@@ -89,6 +93,17 @@ int sim_prepare(sim *s) {
   if (!s->par && !(s->par = par_new(s->threads))) {
     snprintf(s->err, sizeof s->err, "cannot start %d threads", s->threads);
     return -1;
+  }
+  if (!s->wext && par_threads(s->par) > 1) { /* reach.c: walls */
+    int k;
+    s->wextn = 0;
+    for (k = 0; k < NSIDES; k++) s->wextn += s->sides[k].next;
+    s->wext = malloc((size_t)(par_threads(s->par) - 1) * s->wextn *
+                     sizeof *s->wext);
+    if (!s->wext) {
+      snprintf(s->err, sizeof s->err, "out of memory for partial sums");
+      return -1;
+    }
   }
   if (need > s->redcap) {
     size_t cap = s->redcap ? 2 * s->redcap : SIM_RED_BYTES * 64;
@@ -367,7 +382,7 @@ static void housekeeping(sim *s) {
     size_t ncell = 1;
     int d;
     for (d = 0; d < DIM; d++) ncell *= (size_t)s->g.cells[d];
-    particles_sort(ps, ps->cell, ncell);
+    particles_sort(ps, ps->cell, ncell, s->par);
   }
 }
 
@@ -416,6 +431,7 @@ int sim_step(sim *s) {
   prof_mark(s->prof, PROF_HOUSE);
   par_run(s->par, reset_part, &s->g);
   grid_reset_slots(&s->g);
+  p2g_plan(s);
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;

@@ -14,6 +14,7 @@
 #include "bands.h"
 #include "dim.h"
 #include "grid.h"
+#include "mark.h"
 #include "material.h"
 #include "particles.h"
 #include "par.h"
@@ -125,8 +126,12 @@ typedef struct sim {
   int threads;
   par *par;
   bands bands;       /* the plan of this step's scatters (bands.h) */
+  marks marks;       /* shared-node marking's room (mark.h) */
   void *red;         /* per-chunk partial sums of the threaded phases */
   size_t redcap;     /* ... its bytes */
+  double *wext;      /* reach.c: each thread but the first's copy of the
+                        sides' reach arrays, wextn doubles each */
+  size_t wextn;
   /* contact.c's records of a threaded pass, added up in node order after
   ** it: per shared node the driven body's force and work (cbody -1:
   ** none) */
@@ -190,7 +195,10 @@ double sim_residual(const sim *s);
 void sim_measure(sim *s);
 
 /* phases (one file each) */
-int p2g_mark(sim *s);          /* p2g.c: which nodes are shared */
+void p2g_plan(sim *s);         /* p2g.c: the scatter plan of the step
+                                  (bands.h), before marking and p2g */
+int p2g_mark(sim *s);          /* mark.c: shared nodes and their slots;
+                                  0 or -1 (out of memory) */
 void p2g(sim *s);              /* p2g.c: mass, momentum, force */
 void solve_momentum(sim *s);   /* solve.c: q = p + dt f */
 void solve_velocity(sim *s);   /* solve.c: q -> vL, f -> dv */

@@ -8,6 +8,7 @@
 ** model stores.  It is summed as e.thermal, an input to the budget
 ** like boundary work.
 */
+#include "par.h"
 #include "thermal.h"
 
 int thermal_enable(sim *s) {
@@ -61,18 +62,32 @@ void thermal_prestress(sim *s) {
   }
 }
 
-void thermal(sim *s) {
+/* whole chunks of particles (par.h), the work summed per chunk */
+static void thermal_part(void *arg, int t, int nparts) {
+  sim *s = arg;
   particles *ps = &s->ps;
-  double *T = particles_comp(ps, s->ftemp, 0);
+  double *T = particles_comp(ps, s->ftemp, 0), *red = s->red;
   const double Tn = s->temp;
-  double work = 0;
-  size_t i;
-  for (i = 0; i < ps->n; i++) {
-    int32_t mi = s->bmat[ps->body[i]];
-    double dT = Tn - T[i];
-    T[i] = Tn;
-    if (mi < 0 || s->mats[mi].alpha == 0 || dT == 0) continue;
-    work += heat(&s->mats[mi], ps, i, dT);
+  size_t n = ps->n, c, c0, c1, i, i0, i1;
+  par_chunks(n, t, nparts, &c0, &c1);
+  for (c = c0; c < c1; c++) {
+    double work = 0;
+    par_chunk(n, c, &i0, &i1);
+    for (i = i0; i < i1; i++) {
+      int32_t mi = s->bmat[ps->body[i]];
+      double dT = Tn - T[i];
+      T[i] = Tn;
+      if (mi < 0 || s->mats[mi].alpha == 0 || dT == 0) continue;
+      work += heat(&s->mats[mi], ps, i, dT);
+    }
+    red[c] = work;
   }
-  s->e.thermal += work;
+}
+
+/* the chunks' work added in chunk order: the same for any thread count */
+void thermal(sim *s) {
+  const double *red = s->red;
+  size_t c, nc = par_nchunks(s->ps.n);
+  par_run(s->par, thermal_part, s);
+  for (c = 0; c < nc; c++) s->e.thermal += red[c];
 }

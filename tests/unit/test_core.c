@@ -65,6 +65,7 @@ static void transfer(void) {
   block(&s, 1);
   s.mcut = 0;
   grid_reset(&s.g, 1);
+  p2g_plan(&s);
   p2g_mark(&s);
   p2g(&s);
   for (i = 0; i < s.ps.n; i++) {

@@ -289,9 +289,9 @@ static void thermal_confined(void) {
     thermal_enable(&s);
     s.started = 1;  /* heat the held particle: no grid, L = 0 */
     thermal_uniform(&s, dT);
-    thermal(&s);
     s.dt = 1e-3;
-    sim_prepare(&s);
+    sim_prepare(&s); /* the phases' buffers, before any phase */
+    thermal(&s);
     constitutive(&s);
     UNIT_NEAR(s.ps.s[S_XX][0] / p, 1, 1e-14, k ? "confined heating (plastic): sxx / -3K alpha dT"
                                                : "confined heating: sxx / -3K alpha dT");

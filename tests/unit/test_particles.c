@@ -49,7 +49,7 @@ static void sort(void) {
   particles ps;
   size_t i, sorted = 1, stable = 1;
   fill(&ps);
-  UNIT_CHECK(particles_sort(&ps, ps.cell, 13) == 0, "sort runs");
+  UNIT_CHECK(particles_sort(&ps, ps.cell, 13, NULL) == 0, "sort runs");
   UNIT_CHECK(ps.n == NP && consistent(&ps), "sort keeps every particle's data together");
   for (i = 1; i < ps.n; i++) {
     sorted &= ps.cell[i] >= ps.cell[i - 1];
@@ -74,7 +74,7 @@ static void fit(void) {
   ps.body[k] = 3 * NP;
   ps.cell[k] = (7 * NP) % 13;
   UNIT_CHECK(ps.n == NP + 1 && ps.cap > NP && consistent(&ps), "push after fit");
-  UNIT_CHECK(particles_sort(&ps, ps.cell, 13) == 0 && consistent(&ps), "sort after fit");
+  UNIT_CHECK(particles_sort(&ps, ps.cell, 13, NULL) == 0 && consistent(&ps), "sort after fit");
   particles_free(&ps);
 }
 

@@ -87,7 +87,7 @@ end
 V.case "energy budget through the release, quadratic B-splines"
 do
   -- With linear hats (and GIMP) the free ringing after the release gains
-  -- energy (residual -8 % of the cooling's work by t = 20, -15 % by t =
+  -- energy (residual -7 % of the cooling's work by t = 20, -13 % by t =
   -- 30: see docs/verification.md); the C1 B-spline keeps the budget.
   local bs = mvmpm.load("scenarios/concentric_debond.lua", {strength = sb, shape = "bspline2"})
   bs:run(24)

@@ -60,3 +60,7 @@ same("the same, MUSL with uGIMP and APIC", "tests/verify/scenes/threads_mix.lua"
   {shape = "gimp", transfer = "apic"}, 45)
 same("frictional grains pressed by a driven plate, walls, gravity",
   "tests/verify/scenes/threads_grains.lua", {}, 45)
+-- cooled fast, the disc lets go of the annulus within the run: cuts in
+-- the threaded contact pass, strengths gathered and scattered by threads
+same("bonds cut: concentric cylinders cooled fast", "scenarios/concentric_debond.lua",
+  {rate = 0.02}, 60)

@@ -92,3 +92,24 @@ void bands_plan(bands *b, par *p, const grid *g, int kind, const double *y,
   b->nb = nb;
   b->split++;
 }
+
+typedef struct run_job {
+  const bands *b;
+  bands_fn *fn;
+  void *arg;
+  int pass;
+} run_job;
+
+static void run_part(void *arg, int t, int nparts) {
+  run_job *j = arg;
+  size_t i0, i1;
+  bands_span(j->b, t, j->pass, &i0, &i1);
+  j->fn(j->arg, i0, i1, t, j->pass);
+}
+
+void bands_run(const bands *b, par *p, bands_fn *fn, void *arg) {
+  run_job j = {b, fn, arg, 1};
+  par_run(p, run_part, &j);
+  j.pass = 2;
+  par_run(p, run_part, &j);
+}

@@ -49,6 +49,12 @@ void bands_free(bands *b);
 void bands_plan(bands *b, par *p, const grid *g, int kind, const double *y,
                 size_t n);
 
+/* A scatter over the plan: fn(arg, i0, i1, part, pass) on each part's
+** span of particles (bands_span), all parts of pass 1 over the threads,
+** then all of pass 2.  Needs a plan (b->nb > 0). */
+typedef void bands_fn(void *arg, size_t i0, size_t i1, int part, int pass);
+void bands_run(const bands *b, par *p, bands_fn *fn, void *arg);
+
 /* the particles part blk looks at in a pass: all of its own in pass 1,
 ** in pass 2 only the stretch that has rows to write */
 static inline void bands_span(const bands *b, int blk, int pass, size_t *i0,

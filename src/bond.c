@@ -111,13 +111,8 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   }
 }
 
-typedef struct pass_job { sim *s; int pass; } pass_job;
-
-static void gather_part(void *arg, int t, int nparts) {
-  pass_job *j = arg;
-  size_t i0, i1;
-  bands_span(&j->s->bands, t, j->pass, &i0, &i1);
-  gather(j->s, i0, i1, t, j->pass);
+static void gather_span(void *arg, size_t i0, size_t i1, int t, int pass) {
+  gather(arg, i0, i1, t, pass);
 }
 
 /* a node's strength is that of the particles it owns; a node owning
@@ -134,12 +129,8 @@ static void strength_part(void *arg, int t, int nparts) {
 
 /* over the plan p2g made: the particles have not moved since */
 void bond_gather(sim *s) {
-  if (s->bands.nb) {
-    pass_job j = {s, 1};
-    par_run(s->par, gather_part, &j);
-    j.pass = 2;
-    par_run(s->par, gather_part, &j);
-  } else
+  if (s->bands.nb) bands_run(&s->bands, s->par, gather_span, s);
+  else
     gather(s, 0, s->ps.n, -1, 1);
   par_run(s->par, strength_part, &s->g);
 }

@@ -107,13 +107,8 @@ static void p2g_range(sim *s, int split, size_t i0, size_t i1, int blk,
 #undef P2G
 }
 
-typedef struct pass_job { sim *s; int pass; } pass_job;
-
-static void p2g_part(void *arg, int t, int nparts) {
-  pass_job *j = arg;
-  size_t i0, i1;
-  bands_span(&j->s->bands, t, j->pass, &i0, &i1);
-  p2g_range(j->s, 1, i0, i1, t, j->pass);
+static void p2g_span(void *arg, size_t i0, size_t i1, int t, int pass) {
+  p2g_range(arg, 1, i0, i1, t, pass);
 }
 
 /* the plan is made from the positions the step starts with, and serves
@@ -124,12 +119,7 @@ void p2g_plan(sim *s) {
 }
 
 void p2g(sim *s) {
-  bands *b = &s->bands;
-  if (b->nb) {
-    pass_job j = {s, 1};
-    par_run(s->par, p2g_part, &j);
-    j.pass = 2;
-    par_run(s->par, p2g_part, &j);
-  } else
+  if (s->bands.nb) bands_run(&s->bands, s->par, p2g_span, s);
+  else
     p2g_range(s, 0, 0, s->ps.n, 0, 1);
 }

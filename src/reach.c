@@ -77,24 +77,19 @@ static void shared(sim *s, size_t i, int blk, int pass) {
   }
 }
 
-typedef struct pass_job { sim *s; int pass; } pass_job;
-
 /* Part t of the scatter plan p2g made (the particles have not moved
 ** since): a maximum does not depend on the order it is taken in, and in
 ** a pass no two parts write one node row, so no two threads write one
 ** slot */
-static void shared_part(void *arg, int t, int nparts) {
-  pass_job *j = arg;
-  const bands *b = &j->s->bands;
+static void shared_span(void *arg, size_t i0, size_t i1, int t, int pass) {
+  sim *s = arg;
   stencil_geo geo;
   unsigned char mine[SHAPE_MAXW];
-  size_t i, i0, i1;
-  stencil_geo_init(&geo, &j->s->g);
-  bands_span(b, t, j->pass, &i0, &i1);
+  size_t i;
+  stencil_geo_init(&geo, &s->g);
   for (i = i0; i < i1; i++)
-    if (bands_rows(b, &geo, j->s->shape, j->s->ps.x[BANDS_DIM][i], t,
-                   j->pass, mine))
-      shared(j->s, i, t, j->pass);
+    if (bands_rows(&s->bands, &geo, s->shape, s->ps.x[BANDS_DIM][i], t, pass, mine))
+      shared(s, i, t, pass);
 }
 
 /* The walls, part t of the particles: part 0 into the sides' own
@@ -144,11 +139,7 @@ void reach(sim *s) {
     walls_merge(s);
   }
   if (!s->g.nshared) return;
-  if (b->nb) {
-    pass_job j = {s, 1};
-    par_run(s->par, shared_part, &j);
-    j.pass = 2;
-    par_run(s->par, shared_part, &j);
-  } else
+  if (b->nb) bands_run(b, s->par, shared_span, s);
+  else
     for (i = 0; i < ps->n; i++) shared(s, i, -1, 1);
 }

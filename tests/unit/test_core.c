@@ -118,29 +118,39 @@ static void transfer(void) {
   sim_free(&s);
 }
 
+/* a simulation with a wall of friction mu on the left and one node on
+** it, node (0, 2), of mass 2 that began the step with momentum p and has
+** q after this step's force; returns the node */
+static int32_t wall_scene(sim *s, double mu, const double p[2], const double q[2]) {
+  double lo[2] = {0, 0}, hi[2] = {1, 1};
+  int per[2] = {0, 0}, d;
+  int32_t n;
+  sim_init(s, lo, hi, 0.25, per, SHAPE_LINEAR, 2);
+  s->sides[0].kind = SIDE_WALL;
+  s->sides[0].mu = mu;
+  s->gap_check = 0;
+  s->nbody = 0;
+  grid_reset(&s->g, 1);
+  n = 2 * s->g.n[0];
+  s->g.m[n] = 2.0;
+  for (d = 0; d < 2; d++) {
+    s->g.p[d][n] = p[d];
+    s->g.q[d][n] = q[d];
+  }
+  return n;
+}
+
 /* Coulomb at a wall: a node sliding along a wall keeps |t| - mu dn of its
 ** tangential momentum, and sticks when mu dn >= |t| */
 static void coulomb(void) {
+  /* into the wall (dn = 0.2) and along it (|t| = 0.1); no force on the
+  ** node this step: it began with the same momentum */
+  const double q[2] = {-0.2, 0.1};
   double mus[2] = {0.1, 10.0};
   int c;
   for (c = 0; c < 2; c++) {
     sim s;
-    double lo[2] = {0, 0}, hi[2] = {1, 1};
-    int per[2] = {0, 0};
-    int32_t n;
-    sim_init(&s, lo, hi, 0.25, per, SHAPE_LINEAR, 2);
-    s.sides[0].kind = SIDE_WALL;
-    s.sides[0].mu = mus[c];
-    s.gap_check = 0;
-    s.nbody = 0;
-    grid_reset(&s.g, 1);
-    n = 2 * s.g.n[0]; /* node (0, 2) on the left wall */
-    s.g.m[n] = 2.0;
-    s.g.q[0][n] = -0.2; /* into the wall: dn = 0.2 */
-    s.g.q[1][n] = 0.1;  /* tangential */
-    /* no force on the node this step: it began with the same momentum */
-    s.g.p[0][n] = s.g.q[0][n];
-    s.g.p[1][n] = s.g.q[1][n];
+    int32_t n = wall_scene(&s, mus[c], q, q);
     boundary_apply(&s);
     UNIT_NEAR(s.g.q[0][n], 0, 1e-15, "wall: normal momentum removed");
     if (c == 0) {
@@ -157,21 +167,9 @@ static void coulomb(void) {
 ** and nothing is dissipated (the kinetic energy the correction removes,
 ** |t|^2 / 2m, would book the force's work as friction) */
 static void stick_at_rest(void) {
+  const double p[2] = {0, 0}, q[2] = {-0.05, 0.05};
   sim s;
-  double lo[2] = {0, 0}, hi[2] = {1, 1};
-  int per[2] = {0, 0};
-  int32_t n;
-  sim_init(&s, lo, hi, 0.25, per, SHAPE_LINEAR, 2);
-  s.sides[0].kind = SIDE_WALL;
-  s.sides[0].mu = 10.0;
-  s.gap_check = 0;
-  s.nbody = 0;
-  grid_reset(&s.g, 1);
-  n = 2 * s.g.n[0];
-  s.g.m[n] = 2.0;
-  s.g.p[0][n] = s.g.p[1][n] = 0;      /* at rest when the step began */
-  s.g.q[0][n] = -0.05;                /* the force: into the wall ... */
-  s.g.q[1][n] = 0.05;                 /* ... and along it */
+  int32_t n = wall_scene(&s, 10.0, p, q);
   boundary_apply(&s);
   UNIT_NEAR(s.g.q[1][n], 0, 1e-15, "wall: sticks, tangential momentum removed");
   UNIT_NEAR(s.e.friction, 0, 1e-15, "wall: a node held at rest dissipates nothing");

@@ -101,16 +101,22 @@ static void driven(sim *s) {
   s->e.boundary += w;
 }
 
+/* the node lines side k acts on: its wall line and the ghost lines
+** beyond it, [*first, *last] along the side's normal */
+static void wall_lines(const grid *g, int k, int *first, int *last) {
+  int d = k / 2;
+  if (k & 1) { *first = g->pad + g->cells[d]; *last = g->n[d] - 1; }
+  else { *first = 0; *last = g->pad; }
+}
+
 void boundary_apply(sim *s) {
   grid *g = &s->g;
   int k;
   if (s->ndriven) driven(s);
   for (k = 0; k < NSIDES; k++) {
-    int d = k / 2, line, first, last;
+    int line, first, last;
     if (s->sides[k].kind != SIDE_WALL) continue;
-    /* the wall line and the ghost nodes beyond it */
-    if (k & 1) { first = g->pad + g->cells[d]; last = g->n[d] - 1; }
-    else { first = 0; last = g->pad; }
+    wall_lines(g, k, &first, &last);
     for (line = first; line <= last; line++) wall_line(s, k, line, first);
   }
 }
@@ -137,8 +143,7 @@ void boundary_remap(sim *s) {
     const side *sd = &s->sides[k];
     int d = k / 2, o = 1 - d, line, first, last, j;
     if (sd->kind != SIDE_WALL) continue;
-    if (k & 1) { first = g->pad + g->cells[d]; last = g->n[d] - 1; }
-    else { first = 0; last = g->pad; }
+    wall_lines(g, k, &first, &last);
     for (line = first; line <= last; line++)
       for (j = 0; j < g->n[o]; j++) {
         int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;

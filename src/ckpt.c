@@ -20,6 +20,7 @@
 #include "lauxlib.h"
 #include "lsim.h"
 #include "lstate.h"
+#include "sandbox.h"
 
 /* a list of named numbers, reals or integers */
 typedef struct vlist {
@@ -240,6 +241,9 @@ static void visit_run(ckv *v, lua_State *L, int simidx, lsim *ls,
                       int64_t csv_bytes) {
   lua_Integer k, n;
   char nm[64];
+  /* read before the scene loads (ckpt_sandboxed); applying only uses it */
+  int64_t sandboxed = sandbox_on(L);
+  vint(v, "run.sandbox", &sandboxed);
   vreal(v, "run.out_every", &ls->out_every);
   vreal(v, "run.out_next", &ls->out_next);
   VI(v, "run.csv_every", ls->csv_every, long);
@@ -636,6 +640,21 @@ int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
   }
   ls->restarted = 1;
   return 0;
+}
+
+int ckpt_sandboxed(const ckpt *c) {
+  const char *p = c->b[CB_INTN].data, *end = p ? p + c->b[CB_INTN].n : p;
+  size_t k;
+  static const char name[] = "run.sandbox\n";
+  for (k = 0; p && p < end && k < c->b[CB_INT].n; k++) {
+    const char *nl = memchr(p, '\n', (size_t)(end - p));
+    if (!nl) break;
+    if ((size_t)(nl + 1 - p) == sizeof name - 1 &&
+        memcmp(p, name, sizeof name - 1) == 0)
+      return ((const int64_t *)c->b[CB_INT].data)[k] != 0;
+    p = nl + 1;
+  }
+  return -1;
 }
 
 int ckpt_latest(const char *dir, char *out, size_t len, char *err,

@@ -13,6 +13,8 @@
 **                        another scene is refused by name
 **   snap_files, snap_time, snap_n   the XDMF entries so far
 **   params             the --set overrides, "name=value" lines, sorted
+**                      (int "run.sandbox" says the run was under --sandbox:
+**                      a restart of it is too)
 **   scene, source      the scene file's path and text
 **   lua_state          sim:state's table (lstate.h)
 **   fields             the names of the particle fields saved
@@ -57,6 +59,9 @@ char *ckpt_string(const ckpt *c, int which);
 ** what does not match */
 int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
                size_t errlen);
+/* 1 if the run was under --sandbox, 0 if not, -1 if the checkpoint does
+** not say (written before it was recorded) */
+int ckpt_sandboxed(const ckpt *c);
 /* the --set overrides in force as a checkpoint stores them (malloc'ed;
 ** NULL when out of memory) */
 char *ckpt_overrides(lua_State *L);

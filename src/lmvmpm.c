@@ -142,7 +142,7 @@ static int traceback(lua_State *L) {
   return 1;
 }
 
-static char *slurp(const char *path) {
+char *lmvmpm_read(const char *path) {
   FILE *f = fopen(path, "rb");
   char *buf;
   long n;
@@ -159,12 +159,19 @@ static char *slurp(const char *path) {
 }
 
 int lmvmpm_load(lua_State *L, const char *path) {
-  char *src = slurp(path);
-  int base = lua_gettop(L);
+  char *src = lmvmpm_read(path);
+  int r;
   if (!src) {
     lua_pushfstring(L, "%s: cannot read the scene file", path);
     return -1;
   }
+  r = lmvmpm_load_text(L, path, src);
+  free(src);
+  return r;
+}
+
+int lmvmpm_load_text(lua_State *L, const char *path, const char *src) {
+  int base = lua_gettop(L);
   lua_pushstring(L, src);
   lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   lua_pushstring(L, path);
@@ -173,7 +180,6 @@ int lmvmpm_load(lua_State *L, const char *path) {
   lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.last");
   /* sandboxed, a precompiled scene is refused: bytecode is not checked */
   if (src[0] == LUA_SIGNATURE[0] && sandbox_on(L)) {
-    free(src);
     lua_pushfstring(L, "%s: a precompiled scene (bytecode) is not allowed "
                     "under --sandbox", path);
     return -1;
@@ -181,13 +187,11 @@ int lmvmpm_load(lua_State *L, const char *path) {
   lua_pushcfunction(L, traceback);
   if (luaL_loadbufferx(L, src, strlen(src), lua_pushfstring(L, "@%s", path),
                        sandbox_on(L) ? "t" : NULL)) {
-    free(src);
     lua_replace(L, base + 1);
     lua_settop(L, base + 1);
     return -1;
   }
   lua_remove(L, -2); /* the chunk name */
-  free(src);
   if (lua_pcall(L, 0, 1, base + 1)) {
     lua_replace(L, base + 1);
     lua_settop(L, base + 1);
@@ -206,6 +210,12 @@ int lmvmpm_load(lua_State *L, const char *path) {
   lua_settop(L, base + 1);
   {
     lsim *ls = lua_touserdata(L, -1);
+    if (ls->closed) {
+      lua_settop(L, base);
+      lua_pushfstring(L, "%s: the scene closed its simulation (its __gc "
+                      "ran)", path);
+      return -1;
+    }
     snprintf(ls->scene, sizeof ls->scene, "%s", path);
   }
   return 0;

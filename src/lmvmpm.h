@@ -21,5 +21,10 @@ int lmvmpm_check_overrides(lua_State *L);
 /* load and run a scene file: pushes its simulation; 0 or -1 with an
 ** error message pushed */
 int lmvmpm_load(lua_State *L, const char *path);
+/* the same with the scene's text given (path names it in messages): a
+** restart runs the very text it compared with the checkpoint's */
+int lmvmpm_load_text(lua_State *L, const char *path, const char *src);
+/* a file's bytes, NUL-terminated (malloc'ed; NULL if unreadable) */
+char *lmvmpm_read(const char *path);
 
 #endif

@@ -25,7 +25,10 @@
 
 typedef struct lsim {
   sim s;
-  int ok;                 /* set-up succeeded */
+  int ok;                 /* set-up succeeded, and not closed since */
+  int closed;             /* __gc ran: s is released; methods refuse */
+  int busy;               /* methods under way that call back into Lua
+                          ** holding pointers into s: closing waits */
   /* lattice of seeding points: which body holds each (-1 none) */
   int32_t *occ;
   size_t nocc;
@@ -60,7 +63,13 @@ typedef struct lbody {
 } lbody;
 
 /* lua_sim.c */
+/* the simulation at idx, set up and not closed, else a Lua error */
 lsim *lsim_check(lua_State *L, int idx);
+/* mark ls busy until the calling C function returns or raises: pushes a
+** to-be-closed value, so call it where the stack above it is free */
+void lsim_hold(lua_State *L, lsim *ls);
+/* every engine metatable: getmetatable gives this, not the table */
+void lsim_lock(lua_State *L, int mtidx);
 int lsim_new(lua_State *L);
 int lsim_env_threads(void);                  /* $MVMPM_THREADS or 1 */                 /* mvmpm.sim{...} */
 void lsim_open(lua_State *L);
@@ -69,6 +78,9 @@ void lsim_uv(lua_State *L, int idx, const char *field); /* push uv.field */
 int lbody_new(lua_State *L);                /* sim:body{...} */
 void lbody_open(lua_State *L);
 int lbody_push(lua_State *L, int simidx, int b);
+/* the body at idx, of the simulation ls (what names the caller in the
+** message): a body of another simulation, or of a closed one, raises */
+lbody *lbody_check(lua_State *L, int idx, const lsim *ls, const char *what);
 /* lua_material.c */
 void lmat_open(lua_State *L, int modidx);
 material *lmat_check(lua_State *L, int idx);

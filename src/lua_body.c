@@ -15,8 +15,22 @@
 #include "lsim.h"
 #include "thermal.h"
 
+/* a body whose simulation is open: its arrays are the body's memory */
 static lbody *checkbody(lua_State *L, int idx) {
-  return luaL_checkudata(L, idx, LBODY_MT);
+  lbody *lb = luaL_checkudata(L, idx, LBODY_MT);
+  if (lb->ls->closed)
+    luaL_error(L, "body %d: its simulation was closed (its memory is "
+                  "released): the body cannot be used any more", lb->idx + 1);
+  return lb;
+}
+
+lbody *lbody_check(lua_State *L, int idx, const lsim *ls, const char *what) {
+  lbody *lb = checkbody(L, idx);
+  /* its index means nothing in another simulation's arrays */
+  if (lb->ls != ls)
+    luaL_error(L, "%s: body '%s' belongs to another simulation", what,
+               lb->ls->s.bodies[lb->idx].name);
+  return lb;
 }
 
 static int occ_init(lua_State *L, lsim *ls) {
@@ -267,7 +281,7 @@ static void seedbox_free(seedbox *bx) {
 }
 
 static int seedbox_gc(lua_State *L) {
-  seedbox_free(lua_touserdata(L, 1));
+  seedbox_free(luaL_checkudata(L, 1, "mvmpm.seedbox"));
   return 0;
 }
 
@@ -277,6 +291,7 @@ static seedbox *seedbox_new(lua_State *L) {
   if (luaL_newmetatable(L, "mvmpm.seedbox")) {
     lua_pushcfunction(L, seedbox_gc);
     lua_setfield(L, -2, "__gc");
+    lsim_lock(L, -1);
   }
   lua_setmetatable(L, -2);
   return bx;
@@ -311,6 +326,7 @@ int lbody_new(lua_State *L) {
   luaL_checktype(L, 2, LUA_TTABLE);
   lua_settop(L, 2);
   bx = seedbox_new(L); /* index 3: freed by the collector on any error */
+  lsim_hold(L, ls);    /* index 4: the velocity and shape functions run */
   chk_keys(L, 2, "body", keys);
   if (s->started) luaL_error(L, "body: bodies must be added before the first step");
   lua_getfield(L, 2, "name");
@@ -558,6 +574,7 @@ void lbody_open(lua_State *L) {
   lua_setfield(L, -2, "__index");
   lua_pushcfunction(L, btostr);
   lua_setfield(L, -2, "__tostring");
+  lsim_lock(L, -1);
   luaL_newlib(L, meth);
   lua_setfield(L, -2, "methods");
   lua_pop(L, 1);

@@ -220,6 +220,7 @@ void lmat_open(lua_State *L, int modidx) {
                                   {NULL, NULL}};
   luaL_newmetatable(L, LMAT_MT);
   luaL_setfuncs(L, meta, 0);
+  lsim_lock(L, -1);
   lua_pop(L, 1);
   lua_pushcfunction(L, elastic);
   lua_setfield(L, modidx, "elastic");

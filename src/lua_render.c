@@ -94,6 +94,8 @@ int lrender_sim(lua_State *L) {
   const char **names;
   int b, d;
   luaL_checktype(L, 2, LUA_TTABLE);
+  lua_settop(L, 2);
+  lsim_hold(L, ls); /* the options table may have metamethods */
   chk_keys(L, 2, what, keys);
   memset(&o, 0, sizeof o);
   file = sandbox_path(L, reqstr(L, 2, what, "file"), what, path, sizeof path);

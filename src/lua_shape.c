@@ -212,6 +212,7 @@ void lshape_open(lua_State *L, int modidx) {
   lua_setfield(L, -2, "__tostring");
   luaL_newlib(L, meth);
   lua_setfield(L, -2, "__index");
+  lsim_lock(L, -1);
   lua_pop(L, 1);
   lua_pushvalue(L, modidx);
   luaL_setfuncs(L, fns, 0);

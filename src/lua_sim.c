@@ -14,8 +14,49 @@
 
 lsim *lsim_check(lua_State *L, int idx) {
   lsim *ls = luaL_checkudata(L, idx, LSIM_MT);
+  if (ls->closed)
+    luaL_error(L, "the simulation was closed (its __gc ran and its memory "
+                  "is released): it cannot be used any more");
   if (!ls->ok) luaL_error(L, "simulation is not set up");
   return ls;
+}
+
+/*
+** A method that calls Lua (callbacks, drives, a body's velocity function)
+** keeps pointers into the simulation across the call.  Lua never collects
+** the simulation meanwhile (the method's stack holds it), but a script
+** with the real metatable (debug) can call __gc by hand; busy makes that
+** an error instead of freeing memory under the method.  The count goes
+** back in a to-be-closed slot, so an error unwinding the method ends the
+** hold as well as a return does.
+*/
+static int unhold(lua_State *L) {
+  lsim **p = luaL_checkudata(L, 1, "mvmpm.hold");
+  if (*p) {
+    (*p)->busy--;
+    *p = NULL;
+  }
+  return 0;
+}
+
+void lsim_lock(lua_State *L, int mtidx) {
+  mtidx = lua_absindex(L, mtidx);
+  lua_pushliteral(L, "mvmpm: this metatable is not accessible");
+  lua_setfield(L, mtidx, "__metatable");
+}
+
+void lsim_hold(lua_State *L, lsim *ls) {
+  lsim **p = lua_newuserdatauv(L, sizeof *p, 0);
+  *p = NULL;
+  if (luaL_newmetatable(L, "mvmpm.hold")) {
+    lua_pushcfunction(L, unhold);
+    lua_setfield(L, -2, "__close");
+    lsim_lock(L, -1);
+  }
+  lua_setmetatable(L, -2);
+  *p = ls;
+  ls->busy++;
+  lua_toclose(L, -1);
 }
 
 void lsim_uv(lua_State *L, int idx, const char *field) {
@@ -290,15 +331,27 @@ int lsim_new(lua_State *L) {
   return 1;
 }
 
+/* the finalizer; called by hand (debug.getmetatable) it closes the
+** simulation too, and every later use is a Lua error (lsim_check).  A
+** second call does nothing. */
 static int lgc(lua_State *L) {
   lsim *ls = luaL_checkudata(L, 1, LSIM_MT);
+  if (ls->busy)
+    return luaL_error(L, "the simulation is running (a callback, drive or "
+                         "velocity function is under way): it cannot be "
+                         "closed now");
+  ls->closed = 1;
   if (ls->ok) {
     char err[256];
     /* no raising in __gc; an interrupted run's table stays .part */
     if (ls->csv_open && ls->interrupted) out_csv_leave(&ls->csv);
     else if (ls->csv_open) out_csv_close(&ls->csv, err, sizeof err);
+    ls->csv_open = 0;
     free(ls->occ);
     free(ls->snaps);
+    ls->occ = NULL;
+    ls->snaps = NULL;
+    ls->nsnap = ls->snapcap = 0;
     sim_free(&ls->s);
     ls->ok = 0;
   }
@@ -311,6 +364,7 @@ static int lcontact(lua_State *L) {
   static const char *const ck[] = {"friction", "separation", "bond", NULL};
   static const char *const pk[] = {"friction", "bond", NULL};
   lsim *ls = lsim_check(L, 1);
+  lsim_hold(L, ls); /* the option tables may have metamethods */
   if (lua_istable(L, 2)) {
     chk_keys(L, 2, "contact", ck);
     ls->s.mu_default = friction(L, 2, "contact", ls->s.mu_default);
@@ -318,7 +372,8 @@ static int lcontact(lua_State *L) {
     ls->s.bond_default = bondcap(L, 2, "contact", ls->s.bond_default);
     return 0;
   } else {
-    lbody *a = luaL_checkudata(L, 2, LBODY_MT), *b = luaL_checkudata(L, 3, LBODY_MT);
+    lbody *a = lbody_check(L, 2, ls, "contact");
+    lbody *b = lbody_check(L, 3, ls, "contact");
     int32_t fa = ls->s.bodies[a->idx].field, fb = ls->s.bodies[b->idx].field;
     double mu;
     luaL_checktype(L, 4, LUA_TTABLE);
@@ -398,6 +453,7 @@ static int lstep(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   lua_Integer n = luaL_optinteger(L, 2, 1);
   if (n < 0) luaL_argerror(L, 2, "number of steps must be >= 0");
+  lsim_hold(L, ls);
   run_until(L, 1, HUGE_VAL, (long)n);
   lua_pushnumber(L, ls->s.t);
   return 1;
@@ -406,6 +462,7 @@ static int lstep(lua_State *L) {
 static int lrun(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   double t = luaL_optnumber(L, 2, ls->s.t_end);
+  lsim_hold(L, ls);
   run_until(L, 1, t, -1);
   lua_pushnumber(L, ls->s.t);
   return 1;
@@ -621,7 +678,11 @@ static int lnewindex(lua_State *L) {
 }
 
 static int ltostr(lua_State *L) {
-  lsim *ls = lsim_check(L, 1);
+  lsim *ls = luaL_checkudata(L, 1, LSIM_MT);
+  if (ls->closed || !ls->ok) {
+    lua_pushstring(L, ls->closed ? "sim (closed)" : "sim (not set up)");
+    return 1;
+  }
   lua_pushfstring(L, "sim: %d bodies, %d particles, t = %f, step %d",
                   ls->s.nbody, (int)ls->s.ps.n, ls->s.t, (int)ls->s.step);
   return 1;
@@ -645,6 +706,7 @@ void lsim_open(lua_State *L) {
   lua_setfield(L, -2, "__gc");
   lua_pushcfunction(L, ltostr);
   lua_setfield(L, -2, "__tostring");
+  lsim_lock(L, -1);
   luaL_newlib(L, meth);
   lua_setfield(L, -2, "methods");
   lua_pop(L, 1);

@@ -2,6 +2,7 @@
 ** main.c - the mvmpm command: run a scene, step it at a prompt, or run
 ** verification scripts.
 */
+#include <errno.h>
 #include <glob.h>
 #include <math.h>
 #include <sys/stat.h>
@@ -109,6 +110,11 @@ static int options(lua_State *L, int argc, char **argv, int i, runopts *o,
     } else if (strcmp(argv[i], "--out") == 0) {
       if (i + 1 >= argc) { fprintf(stderr, "%s: --out needs a directory\n", progname); return -1; }
       o->out = argv[++i];
+      if (!o->out[0]) { /* not "/": an empty root would be no root */
+        fprintf(stderr, "%s: --out needs a directory (the name given is "
+                "empty)\n", progname);
+        return -1;
+      }
     } else if (strcmp(argv[i], "--quiet") == 0) {
       o->quiet = 1;
     } else if (run && strcmp(argv[i], "--sandbox") == 0) {
@@ -236,19 +242,84 @@ static int restart_prepare(lua_State *L, runopts *o, ckpt *c, char *outdir,
   return 0;
 }
 
-/* after the scene loaded again: it must be the same text */
-static int restart_same_scene(lua_State *L, const ckpt *c, const char *scene) {
-  char *src = ckpt_string(c, CB_SOURCE);
-  int same;
-  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
-  same = src && lua_isstring(L, -1) && strcmp(src, lua_tostring(L, -1)) == 0;
-  lua_pop(L, 1);
-  free(src);
-  if (!same)
+/*
+** Before anything runs: the scene file must hold the text the checkpoint
+** was written from.  What then runs is that compared text, not the file
+** read again, so a file changed in between is never executed.  Returns
+** the text (malloc'ed), or NULL after printing why.
+*/
+static char *restart_scene_text(const ckpt *c, const char *scene) {
+  char *src = ckpt_string(c, CB_SOURCE), *file = lmvmpm_read(scene);
+  int same = src && file && strcmp(src, file) == 0;
+  if (!src)
+    fprintf(stderr, "%s: out of memory\n", progname);
+  else if (!file)
+    fprintf(stderr, "%s: %s: cannot read the scene file\n", progname, scene);
+  else if (!same)
     fprintf(stderr, "%s: %s is not the scene %s was written from (its text "
-            "differs); a changed scene cannot continue the run\n", progname,
-            scene, c->path);
-  return same ? 0 : -1;
+            "differs); a changed scene cannot continue the run, and none of "
+            "it was run\n", progname, scene, c->path);
+  free(file);
+  if (!same) free(src);
+  return same ? src : NULL;
+}
+
+/* a run under --sandbox continues under it: a checkpoint does not give
+** the scene more than it had */
+static int restart_sandbox(runopts *o, const ckpt *c) {
+  int was = ckpt_sandboxed(c);
+  if (was < 0) {
+    fprintf(stderr, "%s: %s does not record whether its run was under "
+            "--sandbox (written by an older mvmpm); it cannot continue\n",
+            progname, c->path);
+    return -1;
+  }
+  if (was && !o->sandbox) {
+    fprintf(stderr, "%s: %s was written by a run under --sandbox, so this "
+            "one is too (--sandbox applies)\n", progname, c->path);
+    o->sandbox = 1;
+  }
+  return 0;
+}
+
+/*
+** The output directory the command line decides must be one the run can
+** use: a directory that is there and writable, or one whose nearest
+** existing parent is (then it is made when output starts).
+*/
+static int usable_dir(const char *dir, char *err, size_t errlen) {
+  char up[1024], next[1024];
+  const char *why;
+  struct stat st;
+  if (stat(dir, &st) == 0) {
+    if (!S_ISDIR(st.st_mode))
+      snprintf(err, errlen, "%s: the output directory is not a directory",
+               dir);
+    else if (access(dir, W_OK | X_OK) != 0)
+      snprintf(err, errlen, "%s: the output directory cannot be written (%s)",
+               dir, strerror(errno));
+    else return 0;
+    return -1;
+  }
+  if (errno != ENOENT) {
+    snprintf(err, errlen, "%s: cannot create directory (%s)", dir,
+             strerror(errno));
+    return -1;
+  }
+  snprintf(up, sizeof up, "%s", dir);
+  for (;;) { /* the nearest parent that exists */
+    dirname_of(up, next, sizeof next);
+    if (strcmp(next, up) == 0) break;
+    snprintf(up, sizeof up, "%s", next);
+    if (stat(up, &st) == 0 || errno != ENOENT) break;
+  }
+  if (stat(up, &st) != 0) why = strerror(errno);
+  else if (!S_ISDIR(st.st_mode)) why = "not a directory";
+  else if (access(up, W_OK | X_OK) != 0) why = strerror(errno);
+  else return 0;
+  snprintf(err, errlen, "%s: the output directory cannot be made (%s: %s)",
+           dir, up, why);
+  return -1;
 }
 
 /* --profile: what the engine does each step, and where the time went */
@@ -273,26 +344,48 @@ static int cmd_run(int argc, char **argv) {
   lsim *ls;
   double w0;
   char name[256], root[1024] = "", err[1400], *stored_scene = NULL;
+  char *text = NULL;       /* restart: the compared scene text */
+  char cont[1200];         /* how to continue from the newest checkpoint */
   ckpt c;
   memset(&c, 0, sizeof c);
   particles_init(&c.ps);
   if (options(L, argc, argv, 2, &o, 1)) return 2;
   if (!o.scene && !o.restart) { usage(stderr); return 2; }
   if (o.restart) {
-    if (restart_prepare(L, &o, &c, root, sizeof root)) { ckpt_free(&c); return 1; }
-    if (!o.scene) o.scene = stored_scene = ckpt_string(&c, CB_SCENE);
+    if (restart_prepare(L, &o, &c, root, sizeof root) ||
+        restart_sandbox(&o, &c) ||
+        (!o.scene && !(o.scene = stored_scene = ckpt_string(&c, CB_SCENE))) ||
+        !(text = restart_scene_text(&c, o.scene))) {
+      ckpt_free(&c);
+      free(stored_scene);
+      lua_close(L);
+      return 1;
+    }
   } else if (o.out) snprintf(root, sizeof root, "%s", o.out);
   else {
     basename_noext(o.scene, name, sizeof name);
     snprintf(root, sizeof root, "out/%s", name);
   }
+  /* the root the command line fixes is checked before the scene runs */
+  if ((o.out || o.sandbox) && usable_dir(root, err, sizeof err)) {
+    fprintf(stderr, "%s: %s\n", progname, err);
+    ckpt_free(&c);
+    free(stored_scene);
+    free(text);
+    lua_close(L);
+    return 1;
+  }
   if (o.sandbox) sandbox_open(L, root);
-  if (lmvmpm_load(L, o.scene) || lmvmpm_check_overrides(L)) {
+  if ((text ? lmvmpm_load_text(L, o.scene, text) : lmvmpm_load(L, o.scene)) ||
+      lmvmpm_check_overrides(L)) {
     fail(L, NULL);
     ckpt_free(&c);
     free(stored_scene);
+    free(text);
+    lua_close(L);
     return 1;
   }
+  free(text);
   ls = lua_touserdata(L, -1);
   if (o.restart || o.sandbox || o.out) { /* the command line decides */
     snprintf(ls->outdir, sizeof ls->outdir, "%s", root);
@@ -305,9 +398,8 @@ static int cmd_run(int argc, char **argv) {
   if (ls->out_enabled && ls->out_every <= 0) ls->out_every = ls->s.t_end / 20;
   if (ls->out_enabled && ls->csv_every <= 0) ls->csv_every = 1;
   if (o.restart) {
-    int bad = restart_same_scene(L, &c, o.scene);
-    if (!bad && (bad = ckpt_apply(L, -1, &c, err, sizeof err)))
-      fprintf(stderr, "%s: %s\n", progname, err);
+    int bad = ckpt_apply(L, -1, &c, err, sizeof err);
+    if (bad) fprintf(stderr, "%s: %s\n", progname, err);
     if (bad) {
       ckpt_free(&c);
       free(stored_scene);
@@ -345,11 +437,14 @@ static int cmd_run(int argc, char **argv) {
   interrupt_clear();
   lua_getglobal(L, "sim");
   ls = lua_touserdata(L, -1);
+  /* a sandboxed run is continued sandboxed: the command says so too */
+  snprintf(cont, sizeof cont, "%s run --restart %s%s", progname, ls->ck_last,
+           o.sandbox ? " --sandbox" : "");
   if (rc && ls->interrupted) {
     fprintf(stderr, "%s%s: interrupted at step %ld, t = %g; checkpoint written: "
-            "%s\ncontinue with: %s run --restart %s\n",
+            "%s\ncontinue with: %s\n",
             ls->progress && isatty(2) ? "\n" : "", progname, ls->s.step,
-            ls->s.t, ls->ck_last, progname, ls->ck_last);
+            ls->s.t, ls->ck_last, cont);
     lua_close(L);
     free(stored_scene);
     return 130;
@@ -359,8 +454,8 @@ static int cmd_run(int argc, char **argv) {
     lua_pop(L, 1);
     fail(L, NULL);
     if (ls->ck_last[0])
-      fprintf(stderr, "%s: the newest checkpoint is %s (continue with: %s run "
-              "--restart %s)\n", progname, ls->ck_last, progname, ls->ck_last);
+      fprintf(stderr, "%s: the newest checkpoint is %s (continue with: %s)\n",
+              progname, ls->ck_last, cont);
   }
   lua_settop(L, 0);
   lua_getglobal(L, "sim");

@@ -387,6 +387,8 @@ void ckpt_write(lua_State *L, int simidx) {
     lstate_save(L, -1);
     state = lua_tolstring(L, -1, &statelen);
   }
+  ckname(path, sizeof path, ls->outdir, ls->ck_count + 1);
+  sandbox_file(L, path, "checkpoint"); /* no link followed (sandbox.h) */
   memset(&v, 0, sizeof v);
   ls->ck_count++; /* what a restart continues from */
   visit_sim(&v, s);

@@ -57,7 +57,8 @@ static void usage(FILE *f) {
 "       else $MVMPM_THREADS, else 1); the results are the same bit for bit\n"
 "--profile  prints the effects the step runs and the wall time per phase\n"
 "--sandbox  the scene gets no io, os (but clock/time/date), debug, package,\n"
-"       dofile/loadfile or bytecode, and writes only inside DIR\n"
+"       dofile/loadfile or bytecode, and writes only inside DIR, following\n"
+"       no link there; its checkpoints restart sandboxed\n"
 "exit status: 0 done, 1 error, 2 usage, 130 stopped by Ctrl-C (a checkpoint\n"
 "       was written; the message says how to continue)\n",
           progname, progname, progname, progname, progname, progname);
@@ -409,6 +410,8 @@ static int cmd_run(int argc, char **argv) {
     if (!o.quiet)
       printf("%s: continuing from %s at step %ld, t = %g\n", o.scene, c.path,
              ls->s.step, ls->s.t);
+    /* until this run writes one, the newest is where it started */
+    snprintf(ls->ck_last, sizeof ls->ck_last, "%s", c.path);
     ckpt_free(&c);
     if (o.ck_every > 0) ls->ck_next = ls->s.t + o.ck_every;
   }

@@ -4,10 +4,12 @@
 ** read back reproduces the doubles exactly.
 */
 #include <errno.h>
+#include <fcntl.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "ofile.h"
 #include "out_csv.h"
 
 int out_csv_open(csvout *c, const char *path, const char *const *cols,
@@ -17,7 +19,7 @@ int out_csv_open(csvout *c, const char *path, const char *const *cols,
   memset(c, 0, sizeof *c);
   snprintf(c->path, sizeof c->path, "%s", path);
   snprintf(part, sizeof part, "%s.part", path);
-  c->f = fopen(part, "w");
+  c->f = ofile_fcreate(part, "w"); /* never through a link */
   if (!c->f) {
     snprintf(err, errlen, "%s: cannot create (%s)", part, strerror(errno));
     return -1;
@@ -47,29 +49,41 @@ int out_csv_resume(csvout *c, const char *path, long length, int ncol,
                    char *err, size_t errlen) {
   char part[1040];
   struct stat st;
+  int fd;
   memset(c, 0, sizeof *c);
   snprintf(c->path, sizeof c->path, "%s", path);
   snprintf(part, sizeof part, "%s.part", path);
   c->ncol = ncol;
-  if (stat(part, &st) != 0) {
-    if (errno != ENOENT || stat(path, &st) != 0 || rename(path, part) != 0) {
+  if (lstat(part, &st) != 0) {
+    if (errno != ENOENT || lstat(path, &st) != 0 || rename(path, part) != 0) {
       snprintf(err, errlen, "%s: cannot continue the diagnostics table: "
                "neither it nor %s can be used (%s)", path, part,
                strerror(errno));
       return -1;
     }
   }
+  /* under --sandbox never through a link (ofile.h) */
+  fd = open(part, O_WRONLY | O_APPEND | O_CLOEXEC | ofile_nofollow());
+  if (fd < 0 || fstat(fd, &st) != 0) {
+    snprintf(err, errlen, "%s: cannot continue (%s)", part, strerror(errno));
+    if (fd >= 0) close(fd);
+    return -1;
+  }
   if (st.st_size < length) {
     snprintf(err, errlen, "%s: the diagnostics table is shorter (%lld bytes) "
              "than at the checkpoint (%ld bytes)", part,
              (long long)st.st_size, length);
+    close(fd);
     return -1;
   }
   /* where "a" puts the position before the first write is the C
   ** library's choice: seek, so out_csv_sync's ftell is the length */
-  if (truncate(part, length) != 0 || !(c->f = fopen(part, "a")) ||
+  if (ftruncate(fd, length) != 0 || !(c->f = fdopen(fd, "a")) ||
       fseek(c->f, 0, SEEK_END) != 0) {
     snprintf(err, errlen, "%s: cannot continue (%s)", part, strerror(errno));
+    if (c->f) fclose(c->f);
+    else close(fd);
+    c->f = NULL;
     return -1;
   }
   return 0;

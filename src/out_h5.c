@@ -16,6 +16,7 @@
 
 #include <hdf5.h>
 
+#include "ofile.h"
 #include "out_h5.h"
 
 #define FORMAT "mvmpm-snapshot-1"
@@ -457,7 +458,7 @@ int out_h5_write_state(const char *path, const char *format,
     goto out;
   }
   sprintf(tmp, "%s.tmp", path);
-  fd = open(tmp, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  fd = ofile_create(tmp); /* never through a link */
   if (fd < 0) {
     fail(&S, "cannot create file");
     goto out;

@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ofile.h"
 #include "out_xdmf.h"
 
 #if DIM == 2
@@ -207,7 +208,7 @@ int out_xdmf_write(const char *path, const xdmf_entry *e, int ne,
   }
   sprintf(tmp, "%s.tmp", path);
   errno = 0;
-  fp = fopen(tmp, "w");
+  fp = ofile_fcreate(tmp, "w"); /* never through a link */
   if (!fp) {
     snprintf(err, errlen, "%s: cannot create file (%s)", path,
              strerror(errno));

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 #include <zlib.h>
+#include "ofile.h"
 #include "png.h"
 
 static void put32(unsigned char *p, uint32_t v) {
@@ -99,7 +100,7 @@ int png_write(const char *path, const unsigned char *px, int w, int h,
     snprintf(err, errlen, "%s: %s", path, why);
     return -1;
   }
-  f = fopen(tmp, "wb");
+  f = ofile_fcreate(tmp, "wb"); /* never through a link */
   if (!f) {
     snprintf(err, errlen, "%s: cannot create the file (%s)", path,
              strerror(errno));

@@ -18,6 +18,7 @@
 #include "lsim.h"
 #include "out_h5.h"
 #include "prof.h"
+#include "sandbox.h"
 
 static double now(void) {
   struct timespec ts;
@@ -89,6 +90,7 @@ static void snapshot(lua_State *L, lsim *ls) {
   xdmf_entry *e;
   snprintf(name, sizeof name, "particles_%06d.h5", ls->nsnap);
   snprintf(path, sizeof path, "%s/%s", ls->outdir, name);
+  sandbox_file(L, path, "output");
   run_snapshot(L, ls, path);
   if (ls->nsnap == ls->snapcap) {
     int cap = ls->snapcap ? 2 * ls->snapcap : 64;
@@ -102,6 +104,7 @@ static void snapshot(lua_State *L, lsim *ls) {
   e->time = ls->s.t;
   e->n = ls->s.ps.n;
   snprintf(path, sizeof path, "%s/particles.xmf", ls->outdir);
+  sandbox_file(L, path, "output");
   if (out_xdmf_write(path, ls->snaps, ls->nsnap, &ls->s.ps, err, sizeof err))
     luaL_error(L, "%s", err);
 }
@@ -115,18 +118,28 @@ long run_sync(lua_State *L, lsim *ls) {
   return n;
 }
 
+/* the table and its .part (written first, renamed at the end) */
+static void csv_check(lua_State *L, const char *path) {
+  char part[1100];
+  sandbox_file(L, path, "output");
+  snprintf(part, sizeof part, "%s.part", path);
+  sandbox_file(L, part, "output");
+}
+
 /* a restarted run: the table continues where the checkpoint left it, the
 ** index lists the snapshots up to then, the rest is already scheduled */
 static void out_resume(lua_State *L, lsim *ls) {
   char err[1100], path[1100];
   if (ls->csv_resume >= 0) {
     snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
+    csv_check(L, path);
     if (out_csv_resume(&ls->csv, path, ls->csv_resume, NCOLS, err, sizeof err))
       luaL_error(L, "%s", err);
   }
   ls->csv_open = 1;
   if (ls->nsnap > 0) {
     snprintf(path, sizeof path, "%s/particles.xmf", ls->outdir);
+    sandbox_file(L, path, "output");
     if (out_xdmf_write(path, ls->snaps, ls->nsnap, &ls->s.ps, err, sizeof err))
       luaL_error(L, "%s", err);
   }
@@ -144,6 +157,7 @@ static void out_start(lua_State *L, lsim *ls) {
   if (!ls->s.started) sim_begin(&ls->s); /* the first row is the start */
   if (ls->csv_every > 0) {
     snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
+    csv_check(L, path);
     if (out_csv_open(&ls->csv, path, cols, NCOLS, err, sizeof err))
       luaL_error(L, "%s", err);
     csv_row(L, ls);

@@ -3,9 +3,13 @@
 ** rules are in sandbox.h).  The registry's "mvmpm.sandbox" holds the
 ** output directory while the state is restricted.
 */
+#include <errno.h>
+#include <stdio.h>
 #include <string.h>
+#include <sys/stat.h>
 #include "lauxlib.h"
 #include "lsim.h"
+#include "ofile.h"
 #include "sandbox.h"
 
 #define KEY "mvmpm.sandbox"
@@ -90,6 +94,7 @@ void sandbox_open(lua_State *L, const char *root) {
   int g, k;
   lua_pushstring(L, root);
   lua_setfield(L, LUA_REGISTRYINDEX, KEY);
+  ofile_strict(); /* no output file is written through a link */
   lua_pushglobaltable(L);
   g = lua_gettop(L);
   /* require: engine modules from the engine's directory, Lua files only */
@@ -150,15 +155,76 @@ int sandbox_on(lua_State *L) {
   return on;
 }
 
+/*
+** The components of full below root, one by one: none may be a link (a
+** link planted in the output directory would carry a write outside it);
+** with make, the missing directories on the way are made.  Links are
+** looked at with lstat before the file is written; the writers
+** themselves never follow one at the temp name (ofile.h), and rename
+** replaces a link at the final name instead of writing through it.
+*/
+static void walk(lua_State *L, const char *root, const char *full,
+                 const char *what, int make) {
+  char buf[1100];
+  size_t n = strlen(root), k;
+  struct stat st;
+  if (make && run_mkdirs(root, buf, sizeof buf)) /* the root: the user's */
+    luaL_error(L, "%s: %s", what, buf);
+  if (strncmp(full, root, n) != 0 || (full[n] != '/' && root[n - 1] != '/'))
+    luaL_error(L, "%s: %s is not inside the output directory %s", what, full,
+               root);
+  if (strlen(full) >= sizeof buf) luaL_error(L, "%s: path '%s' is too long",
+                                             what, full);
+  memcpy(buf, full, strlen(full) + 1);
+  for (k = n + 1; ; k++) {
+    char c = buf[k];
+    if (c != '/' && c != '\0') continue;
+    buf[k] = '\0';
+    if (lstat(buf, &st) == 0) {
+      if (S_ISLNK(st.st_mode))
+        luaL_error(L, "%s: %s is a symbolic link; under --sandbox no link "
+                   "inside the output directory is followed (remove it)",
+                   what, buf);
+      if (c == '/' && !S_ISDIR(st.st_mode))
+        luaL_error(L, "%s: %s is not a directory", what, buf);
+    } else if (errno != ENOENT)
+      luaL_error(L, "%s: %s: %s", what, buf, strerror(errno));
+    else if (c == '\0' || !make)
+      return; /* what is not there holds no link */
+    else if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+      luaL_error(L, "%s: %s: cannot create directory (%s)", what, buf,
+                 strerror(errno));
+    if (c == '\0') return;
+    buf[k] = '/';
+  }
+}
+
+void sandbox_file(lua_State *L, const char *path, const char *what) {
+  char tmp[1100];
+  if (lua_getfield(L, LUA_REGISTRYINDEX, KEY) == LUA_TSTRING) {
+    walk(L, lua_tostring(L, -1), path, what, 0);
+    /* its temp name too: ofile would remove a link there, but a link
+    ** planted beside the outputs is named, not passed over */
+    if ((size_t)snprintf(tmp, sizeof tmp, "%s.tmp", path) < sizeof tmp)
+      walk(L, lua_tostring(L, -1), tmp, what, 0);
+  }
+  lua_pop(L, 1);
+}
+
 const char *sandbox_path(lua_State *L, const char *path, const char *what,
                          char *buf, size_t len) {
   const char *p, *root;
-  char err[1100], dir[1100], *slash;
+  size_t n;
   if (lua_getfield(L, LUA_REGISTRYINDEX, KEY) != LUA_TSTRING) {
     lua_pop(L, 1);
     return path;
   }
   root = lua_tostring(L, -1);
+  n = strlen(root);
+  /* the command line refuses an empty root; were it empty, root/path
+  ** would be the absolute /path */
+  if (n == 0)
+    luaL_error(L, "%s: no output directory is set under --sandbox", what);
   if (!path[0] || path[0] == '/')
     luaL_error(L, "%s: path '%s' is not allowed under --sandbox (give a "
                "relative path; files go inside the output directory %s)",
@@ -167,12 +233,11 @@ const char *sandbox_path(lua_State *L, const char *path, const char *what,
     if (strncmp(p, "..", 2) == 0 && (p[2] == '/' || p[2] == '\0'))
       luaL_error(L, "%s: path '%s' is not allowed under --sandbox (no '..': "
                  "files go inside the output directory %s)", what, path, root);
-  if ((size_t)snprintf(buf, len, "%s/%s", root, path) >= len)
+  if ((size_t)snprintf(buf, len, "%s%s%s", root, root[n - 1] == '/' ? "" : "/",
+                       path) >= len)
     luaL_error(L, "%s: path '%s' is too long", what, path);
-  snprintf(dir, sizeof dir, "%s", buf);
-  slash = strrchr(dir, '/');
-  *slash = '\0';
-  if (run_mkdirs(dir, err, sizeof err)) luaL_error(L, "%s: %s", what, err);
+  walk(L, root, buf, what, 1);
   lua_pop(L, 1);
+  sandbox_file(L, buf, what); /* and its temp name */
   return buf;
 }

@@ -11,7 +11,10 @@
 **   mvmpm.load (it reads any file) is refused;
 **   paths given to sim:snapshot, sim:render, mvmpm.plot and
 **   sim:output{dir} must be relative and free of "..": they name files
-**   inside the output directory (sandbox_path).
+**   inside the output directory (sandbox_path);
+**   no symbolic link inside the output directory is followed: a file
+**   whose path below the root holds one is refused (sandbox_file);
+**   the sandbox is recorded in checkpoints and a restart applies it.
 ** Time and memory are not limited: a scene can still loop forever
 ** (Ctrl-C stops it) or ask for a huge grid (refused above 16 GB).
 */
@@ -32,5 +35,9 @@ int sandbox_on(lua_State *L);
 ** "snapshot") and the path.  The result lives in buf. */
 const char *sandbox_path(lua_State *L, const char *path, const char *what,
                          char *buf, size_t len);
+/* sandboxed, a file the engine is about to write (path: the output
+** directory, '/', a name below it): an error naming the link if a
+** component below the root is a symbolic link.  Unsandboxed, nothing. */
+void sandbox_file(lua_State *L, const char *path, const char *what);
 
 #endif

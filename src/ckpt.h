@@ -28,7 +28,8 @@
 #include "out_h5.h"
 #include "particles.h"
 
-#define CKPT_FORMAT "mvmpm-checkpoint-1"
+/* 2: the file carries a checksum (h5sum.h); 1 had none */
+#define CKPT_FORMAT "mvmpm-checkpoint-2"
 
 /* write the next checkpoint of the simulation at simidx into its output
 ** directory (between steps only); raises a Lua error naming the file

@@ -686,7 +686,9 @@ static int getfield(h5s *S, particles *ps, hid_t d, const char *name,
     return fail(S, "dataset '%s' has %llu rows but '%s' has %llu", name,
                 (unsigned long long)rows, first, (unsigned long long)*n);
   f = field(S, ps, d, name, ncomp, type);
-  return f < 0 ? -1 : fill(S, ps, d, f, (size_t)rows);
+  if (f < 0) return -1;
+  ps->fields[f].flags |= PF_READ;
+  return fill(S, ps, d, f, (size_t)rows);
 }
 
 /*

@@ -19,6 +19,7 @@
 #include <hdf5.h>
 
 #include "h5sum.h"
+#include "hash.h"
 #include "out_h5.h"
 #include "out_xdmf.h"
 #include "particles.h"
@@ -407,6 +408,24 @@ static void cleanup(const char *dir) {
   rmdir(dir);
 }
 
+/* BLAKE2b against RFC 7693 appendix A ("abc", 64 bytes) and the
+** 32-byte digest of nothing (Python's hashlib.blake2b) */
+static void blake2b(void) {
+  static const char *const want[2] = {
+    "ba80a53f981c4d0d6a2797b69f12f6e94c212f14685ac4b74b12bb6fdbffa2d1"
+    "7d87c5392aab792dc252d5de4533cc9518d38aa8dbf1925ab92386edd4009923",
+    "0e5751c026e543b2e8ab2eb06099daa1d1e5df47778f7787faab45cdf12fe3a8"};
+  unsigned char out[64];
+  char hex[129];
+  int k, j;
+  for (k = 0; k < 2; k++) {
+    size_t n = k ? 32 : 64;
+    hash_blake2b("abc", k ? 0 : 3, out, n);
+    for (j = 0; j < (int)n; j++) sprintf(hex + 2 * j, "%02x", out[j]);
+    UNIT_CHECK(strcmp(hex, want[k]) == 0, "blake2b case %d: %s", k, hex);
+  }
+}
+
 int main(int argc, char **argv) {
   setvbuf(stdout, NULL, _IONBF, 0);
   char tmpl[] = "/tmp/test_out_h5.XXXXXX";
@@ -414,6 +433,7 @@ int main(int argc, char **argv) {
   UNIT_CHECK(dir != NULL, "mkdtemp: %s", strerror(errno));
   if (!dir) UNIT_END("test_out_h5");
   if (argc > 1) mkdir(dir, 0777);
+  blake2b();
   roundtrip(dir);
   empty(dir);
   failures(dir);

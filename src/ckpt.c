@@ -10,6 +10,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -21,6 +22,7 @@
 #include "lsim.h"
 #include "lstate.h"
 #include "sandbox.h"
+#include "pcheck.h"
 
 /* a list of named numbers, reals or integers */
 typedef struct vlist {
@@ -97,11 +99,28 @@ static long vfind(ckv *v, vlist *l, const char *name) {
   return (long)k;
 }
 
+/* the numbers that may be infinite: a stop never due, sticking
+** friction, a bond without a cap, a time never reached */
+static int may_be_inf(const char *name) {
+  static const char *const end[] = {"t_stop", "mu_default", "bond_default",
+                                    ".mu", ".bond", "_next", ".next", NULL};
+  size_t n = strlen(name), k;
+  int j;
+  for (j = 0; end[j]; j++)
+    if (n >= (k = strlen(end[j])) && strcmp(name + n - k, end[j]) == 0)
+      return 1;
+  return 0;
+}
+
 static void vreal(ckv *v, const char *name, double *p) {
   long k;
   if (v->failed) return;
   if (!v->apply) { vpush(v, &v->re, name, *p, 0); return; }
-  if ((k = vfind(v, &v->re, name)) >= 0) *p = v->re.r[k];
+  if ((k = vfind(v, &v->re, name)) < 0) return;
+  if (isnan(v->re.r[k]) || (isinf(v->re.r[k]) && !may_be_inf(name)))
+    vfail(v, "its value '%s' in /state/real is %g, allowed: a finite "
+          "number", name, v->re.r[k]);
+  else *p = v->re.r[k];
 }
 
 static void vint(ckv *v, const char *name, int64_t *p) {
@@ -471,6 +490,61 @@ void ckpt_write(lua_State *L, int simidx) {
 ** =======================================================
 */
 
+/* x (the value named) must lie in [lo, hi], or (lo, hi] with open */
+static int vrange(ckv *v, const char *name, double x, double lo, double hi,
+                  int open) {
+  if (v->failed) return -1;
+  if (open ? x > lo && x <= hi : x >= lo && x <= hi) return 0;
+  return vfail(v, "its value '%s' in /state is %.17g, allowed %c%.17g, "
+               "%.17g]", name, x, open ? '(' : '[', lo, hi);
+}
+
+/* the state's numbers in the ranges the engine keeps them in (finite
+** already: vreal); n is the checkpoint's particle count */
+static void state_ok(ckv *v, const sim *s, const lsim *ls, size_t n) {
+  const double big = INFINITY, cnt = (double)INT64_MAX;
+  int k;
+  vrange(v, "t_end", s->t_end, 0, big, 1);
+  vrange(v, "dt", s->dt, 0, big, 0);
+  /* the last step ends on t_end up to rounding */
+  vrange(v, "t", s->t, 0, s->t_end + s->dt, 0);
+  vrange(v, "t_stop", s->t_stop, 0, big, 0);
+  vrange(v, "step", (double)s->step, 0, cnt, 0);
+  if (s->step > 0) vrange(v, "dt", s->dt, 0, big, 1);
+  vrange(v, "started", s->started, 0, 1, 0);
+  vrange(v, "flip", s->flip, 0, 1, 0);
+  vrange(v, "cfl", s->cfl, 0, 1, 1);
+  vrange(v, "dt_fixed", s->dt_fixed, 0, big, 0);
+  vrange(v, "mu_default", s->mu_default, 0, big, 0);
+  vrange(v, "bond_default", s->bond_default, 0, big, 0);
+  vrange(v, "gap_check", s->gap_check, 0, 1, 0);
+  vrange(v, "sort_every", s->sort_every, 0, INT32_MAX, 0);
+  vrange(v, "mcut", s->mcut, 0, big, 0);
+  vrange(v, "mcut_rel", s->mcut_rel, 0, big, 0);
+  vrange(v, "vmax", s->vmax, 0, big, 0);
+  vrange(v, "nout", (double)s->nout, 0, (double)n, 0);
+  vrange(v, "nremoved", (double)s->nremoved, 0, cnt, 0);
+  vrange(v, "ncut", (double)s->ncut, 0, cnt, 0);
+  vrange(v, "ncut_total", (double)s->ncut_total, 0, cnt, 0);
+  vrange(v, "bond_area", s->bond_area, 0, big, 0);
+  vrange(v, "temp_on", s->temp_on, 0, 1, 0);
+  /* ids run up to nmade, an int32 */
+  vrange(v, "nmade", (double)s->ps.nmade, (double)n, INT32_MAX, 0);
+  vrange(v, "e.nbadj", (double)s->e.nbadj, 0, cnt, 0);
+  for (k = 0; k < NSIDES; k++)
+    if (vrange(v, "side mu", s->sides[k].mu, 0, big, 0)) return;
+  for (k = 0; k < s->nlaw; k++)
+    if (vrange(v, "law mu", s->laws[k].mu, 0, big, 0) ||
+        vrange(v, "law bond", s->laws[k].bond, 0, big, 0))
+      return;
+  vrange(v, "run.out_every", ls->out_every, 0, big, 0);
+  vrange(v, "run.csv_every", (double)ls->csv_every, 0, big, 0);
+  vrange(v, "run.nsnap", ls->nsnap, 0, INT32_MAX, 0);
+  vrange(v, "run.ck_every", ls->ck_every, 0, big, 0);
+  vrange(v, "run.ck_count", ls->ck_count, 0, 999999, 0);
+  vrange(v, "run.csv_bytes", (double)ls->csv_resume, -1, cnt, 0);
+}
+
 static const char *const blobnames[CB_N] = {"real_names", "real",
     "int_names", "int", "snap_files", "snap_time", "snap_n", "params",
     "scene", "source", "lua_state", "fields"};
@@ -545,10 +619,13 @@ static int fields_match(ckv *v, const sim *s, const ckpt *c) {
       int j = particles_find(&c->ps, f->name);
       sadd(&fl, f->name, strlen(f->name));
       sadd(&fl, "\n", 1);
-      if (j < 0 || c->ps.fields[j].type != f->type ||
-          c->ps.fields[j].ncomp != f->ncomp)
-        r = vfail(v, "its particle field '%s' is missing or of another "
-                  "shape", f->name);
+      if (j < 0 || !(c->ps.fields[j].flags & PF_READ))
+        r = vfail(v, "it has no dataset '%s' (a particle field of this "
+                  "scene)", f->name);
+      else if (c->ps.fields[j].type != f->type ||
+               c->ps.fields[j].ncomp != f->ncomp)
+        r = vfail(v, "its dataset '%s' is of another shape or type than "
+                  "the particle field", f->name);
     }
   if (!r && (fl.bad || fl.n != c->b[CB_FIELDS].n ||
              memcmp(fl.b, c->b[CB_FIELDS].data, fl.n) != 0))
@@ -617,6 +694,28 @@ int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
     visit_run(&v, L, simidx, ls, -1);
     vleft(&v, &v.re);
     vleft(&v, &v.in);
+    state_ok(&v, s, ls, c->ps.n);
+  }
+  if (!v.failed) {
+    pcheck_lim lim;
+    int d;
+    memset(&lim, 0, sizeof lim);
+    lim.nbody = s->nbody;
+    lim.nmade = s->ps.nmade;
+    lim.domain = 1;
+    lim.h = s->g.h;
+    for (d = 0; d < DIM; d++) {
+      lim.lo[d] = s->g.lo[d];
+      lim.hi[d] = s->g.hi[d];
+      lim.cells[d] = s->g.cells[d];
+    }
+    if (pcheck_particles(c->path, &c->ps, &lim, v.err, sizeof v.err)) {
+      lua_settop(L, top);
+      vlist_free(&v.re, 0);
+      vlist_free(&v.in, 0);
+      snprintf(err, errlen, "%s", v.err);
+      return -1;
+    }
   }
   if (!v.failed) copy_particles(&v, s, c);
   if (!v.failed) copy_snaps(&v, ls, c);

@@ -2,8 +2,9 @@
 ** ckpt.h - checkpoints: the whole state of a run, so that it continues
 ** bit for bit after a restart.
 **
-** A checkpoint is an HDF5 file ("mvmpm-checkpoint-1", the snapshot's
-** layout and machinery, out_h5.h) holding every PF_RESTART particle
+** A checkpoint is an HDF5 file ("mvmpm-checkpoint-2", the snapshot's
+** layout and machinery, out_h5.h, with the checksum block of h5sum.h,
+** which a checkpoint must carry) holding every PF_RESTART particle
 ** field and, in the group /state:
 **   real, real_names   the simulation's numbers (time, step size rule,
 **   int, int_names       energy accumulators, bond counters, temperature,
@@ -30,7 +31,8 @@
 #include "out_h5.h"
 #include "particles.h"
 
-#define CKPT_FORMAT "mvmpm-checkpoint-1"
+/* 2: the file carries a checksum (h5sum.h); 1 had none */
+#define CKPT_FORMAT "mvmpm-checkpoint-2"
 
 /* write the next checkpoint of the simulation at simidx into its output
 ** directory (between steps only); raises a Lua error naming the file
@@ -56,7 +58,9 @@ void ckpt_free(ckpt *c);
 char *ckpt_string(const ckpt *c, int which);
 /* put the checkpoint's state into the simulation at simidx, loaded again
 ** from the same scene with the same parameters; 0, or -1 with err saying
-** what does not match */
+** what does not match or lies outside what the engine allows: every
+** field this scene saves must be in the file, every particle pass
+** pcheck.h against the scene, every number of /state be in range */
 int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
                size_t errlen);
 /* 1 if the run was under --sandbox, 0 if not, -1 if the checkpoint does

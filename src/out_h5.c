@@ -17,6 +17,7 @@
 #include <hdf5.h>
 
 #include "ofile.h"
+#include "h5sum.h"
 #include "out_h5.h"
 
 #define FORMAT "mvmpm-snapshot-1"
@@ -335,9 +336,17 @@ static int create(h5s *S, const char *tmp, const particles *ps) {
   return S->file < 0 ? -1 : 0;
 }
 
-/* the finished file as bytes; closing it then frees the driver's copy */
+/*
+** The finished file as bytes, behind the checksum block (h5sum.h); then
+** closing it frees the driver's copy.  The block is a user block put in
+** front of a file made without one, as h5jam does: HDF5 finds the
+** superblock at 512 and takes its addresses from there, and
+** H5Fget_file_image of a file made with a user block leaves the block
+** out of the image but counts it in the length.
+*/
 static int image(h5s *S, void **img, size_t *size) {
   ssize_t len;
+  unsigned char *b;
   int r;
   free(S->buf); /* staging is done: lower the peak */
   S->buf = NULL;
@@ -348,11 +357,12 @@ static int image(h5s *S, void **img, size_t *size) {
     return fail(S, "cannot flush the file in memory");
   len = H5Fget_file_image(S->file, NULL, 0);
   if (len < 0) return fail(S, "cannot finish the file in memory");
-  *img = malloc(len > 0 ? (size_t)len : 1);
-  if (!*img) return fail(S, "out of memory for the file image");
-  if (H5Fget_file_image(S->file, *img, (size_t)len) != len)
+  *img = b = malloc(H5SUM_BLOCK + (size_t)len);
+  if (!b) return fail(S, "out of memory for the file image");
+  if (H5Fget_file_image(S->file, b + H5SUM_BLOCK, (size_t)len) != len)
     return fail(S, "cannot copy the file image");
-  *size = (size_t)len;
+  *size = H5SUM_BLOCK + (size_t)len;
+  h5sum_seal(b, *size);
   r = H5Fclose(S->file);
   S->file = -1;
   return r < 0 ? fail(S, "cannot close the file in memory") : 0;
@@ -677,7 +687,9 @@ static int getfield(h5s *S, particles *ps, hid_t d, const char *name,
     return fail(S, "dataset '%s' has %llu rows but '%s' has %llu", name,
                 (unsigned long long)rows, first, (unsigned long long)*n);
   f = field(S, ps, d, name, ncomp, type);
-  return f < 0 ? -1 : fill(S, ps, d, f, (size_t)rows);
+  if (f < 0) return -1;
+  ps->fields[f].flags |= PF_READ;
+  return fill(S, ps, d, f, (size_t)rows);
 }
 
 /*
@@ -763,6 +775,40 @@ static int getblobs(h5s *S, h5blob *b, int nb) {
   return r;
 }
 
+/*
+** The file is read whole and its checksum checked before HDF5 sees a
+** byte of it (a damaged chunk index can crash HDF5 1.10); HDF5 then
+** opens those checked bytes from memory.  A checkpoint must carry the
+** checksum; a snapshot from before it existed is read unchecked (its
+** fields are still checked by whoever uses them, pcheck.h).
+*/
+/* the core driver refuses an image whose name exists on disk: this
+** name never does (/dev/null is not a directory) */
+#define IMAGE_NAME "/dev/null/mvmpm-image"
+
+static int openimage(h5s *S, const char *sealed) {
+  void *img;
+  size_t size;
+  hid_t fapl;
+  int k = h5sum_load(S->path, &img, &size, S->err, S->errlen);
+  if (k < 0) return S->failed = 1, -1;
+  errno = 0;
+  if (k == H5SUM_NONE && sealed) {
+    free(img);
+    return fail(S, "it has no checksum (written by an mvmpm older than "
+                "the format %s, or rewritten by another tool); this "
+                "version continues only checkpoints that carry one",
+                sealed);
+  }
+  fapl = H5Pcreate(H5P_FILE_ACCESS);
+  if (fapl >= 0 && H5Pset_fapl_core(fapl, (size_t)1 << 20, 0) >= 0 &&
+      H5Pset_file_image(fapl, img, size) >= 0)
+    S->file = H5Fopen(IMAGE_NAME, H5F_ACC_RDONLY, fapl);
+  free(img); /* HDF5 holds its own copy */
+  if (fapl >= 0) H5Pclose(fapl);
+  return S->file < 0 ? fail(S, "cannot open file (not HDF5, or damaged)") : 0;
+}
+
 int out_h5_read_state(const char *path, const char *format, particles *ps,
                       h5meta *meta, h5blob *b, int nb, char *err,
                       size_t errlen) {
@@ -778,9 +824,8 @@ int out_h5_read_state(const char *path, const char *format, particles *ps,
   if (ps->n != 0) {
     r = fail(&S, "cannot read into a store that already holds particles");
   } else {
-    S.file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (S.file < 0) r = fail(&S, "cannot open file (not HDF5, or damaged)");
-    else
+    r = openimage(&S, format);
+    if (r == 0)
       r = (getmeta(&S, meta, want) || getfields(&S, ps) ||
            getblobs(&S, b, nb)) ? -1 : 0;
   }

@@ -17,6 +17,8 @@
 **   root attributes: "format" = "mvmpm-snapshot-1", "time" (F64),
 **     "step" (I64), "cell" (F64), "dim" (I32), "units", "scene".
 ** Strings are variable-length UTF-8 (h5py reads them as str).
+** In front of it all: the 512-byte checksum block of h5sum.h (an HDF5
+** user block); reading checks it before HDF5 sees the file.
 **
 ** The file is built in memory and written with write/fsync/rename: HDF5
 ** 1.10 crashes at exit after a failed H5Fclose, so it never does the
@@ -75,7 +77,8 @@ int out_h5_read_state(const char *path, const char *format, particles *ps,
 ** field already in the store must have its type and component count.
 ** New fields are flagged PF_OUTPUT, with the stored unit but no
 ** component names (pfield only points to names, it cannot own them).
-** Fields of the store the file lacks are left zero (F included), and
+** Fields of the store the file lacks are left zero (F included) and
+** without PF_READ, which those read get (pcheck.h judges them), and
 ** the file's "dim" must be this build's DIM.  On failure ps->n is 0 and
 ** fields may have been added; particles_free releases it as usual. */
 int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,

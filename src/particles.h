@@ -16,7 +16,9 @@
 enum pf_type { PF_DOUBLE, PF_INT32 };
 enum pf_flags {
   PF_OUTPUT = 1, /* written to snapshots */
-  PF_RESTART = 2 /* part of a checkpoint */
+  PF_RESTART = 2, /* part of a checkpoint */
+  PF_READ = 4     /* filled from a file's dataset (out_h5_read): a field
+                     the file lacks is left zero without it */
 };
 
 typedef struct pfield {

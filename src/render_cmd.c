@@ -7,6 +7,7 @@
 #include <string.h>
 #include "cmap.h"
 #include "out_h5.h"
+#include "pcheck.h"
 #include "png.h"
 #include "render_cmd.h"
 #include "render_png.h"
@@ -42,6 +43,7 @@ int render_cmd(int argc, char **argv) {
   const char *snap = NULL, *out = NULL, *title = NULL;
   char outbuf[4096], titlebuf[160], err[2048];
   render_opts o;
+  pcheck_lim lim = {0};
   particles ps;
   h5meta meta;
   double dom[4];
@@ -110,6 +112,19 @@ int render_cmd(int argc, char **argv) {
   particles_init(&ps);
   memset(&meta, 0, sizeof meta);
   if (out_h5_read(snap, &ps, &meta, err, sizeof err)) {
+    fprintf(stderr, "%s: %s\n", prog, err);
+    particles_free(&ps);
+    return 1;
+  }
+  /* what is drawn is judged first: a body index sizes the legend's
+  ** table, a position the picture */
+  lim.nbody = PCHECK_MAXBODY;
+  if (!(ps.fields[particles_find(&ps, "position")].flags & PF_READ)) {
+    fprintf(stderr, "%s: %s: no dataset 'position'\n", prog, snap);
+    particles_free(&ps);
+    return 1;
+  }
+  if (pcheck_particles(snap, &ps, &lim, err, sizeof err)) {
     fprintf(stderr, "%s: %s\n", prog, err);
     particles_free(&ps);
     return 1;

@@ -5,6 +5,7 @@
 #ifndef mvmpm_lmvmpm_h
 #define mvmpm_lmvmpm_h
 
+#include <stddef.h>
 #include "lua.h"
 
 #define MVMPM_VERSION "0.1.0"
@@ -21,5 +22,8 @@ int lmvmpm_check_overrides(lua_State *L);
 /* load and run a scene file: pushes its simulation; 0 or -1 with an
 ** error message pushed */
 int lmvmpm_load(lua_State *L, const char *path);
+/* 0 if path is a regular file one can open, else -1 with the reason in
+** err: a FIFO or a device would block a reader or never end */
+int lmvmpm_regular(const char *path, char *err, size_t errlen);
 
 #endif

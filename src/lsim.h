@@ -59,7 +59,22 @@ typedef struct lbody {
   int idx;
 } lbody;
 
+/* what a run may need before it is refused as one that would not end */
+#define LSIM_MAX_STEPS 1e12   /* steps to t_end */
+#define LSIM_MAX_EVENTS 1e9   /* outputs, checkpoints, calls of a callback */
+
 /* lua_sim.c */
+extern const char *const lsim_side_names[];  /* "left", "right", ... */
+/* refuse a velocity v (DIM components) that the step cannot follow: its
+** CFL step would need more than LSIM_MAX_STEPS steps to t_end.  fnidx: the
+** scene function that gave it (the error names where it was defined), or
+** 0 (the calling scene line); what names it, formatted only on failure */
+void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,
+                      const char *fmt, ...) __attribute__((format(printf, 5, 6)));
+/* refuse an interval every (> 0) that makes more than LSIM_MAX_EVENTS
+** events in a span of simulated time; what names it for the message */
+void lsim_check_every(lua_State *L, const char *what, double every,
+                      double span);
 lsim *lsim_check(lua_State *L, int idx);
 int lsim_new(lua_State *L);
 int lsim_env_threads(void);                  /* $MVMPM_THREADS or 1 */                 /* mvmpm.sim{...} */

@@ -109,6 +109,9 @@ int lrender_sim(lua_State *L);
 void lrender_open(lua_State *L, int modidx);
 /* run.c */
 int run_until(lua_State *L, int simidx, double t_end, long max_steps);
+/* refuse a run to t_end that would need more than LSIM_MAX_STEPS steps
+** of the step it would start with (fixed, or the CFL step) */
+void run_check_steps(lua_State *L, lsim *ls, double t_end);
 /* mkdir -p; 0, or -1 with err naming the directory and the reason */
 int run_mkdirs(const char *path, char *err, size_t errlen);
 /* flush the diagnostics table to disk; its length in bytes, -1 if none */

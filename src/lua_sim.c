@@ -676,6 +676,10 @@ static int lnewindex(lua_State *L) {
   else if (strcmp(k, "progress") == 0) ls->progress = lua_toboolean(L, 3);
   else if (strcmp(k, "threads") == 0)
     sim_set_threads(s, (int)chk_num(L, 4, "sim", k, 1, 1, PAR_MAX, CHK_INT));
+  /* a step made too small (or an end too far) while running: refused
+  ** here, where the number enters */
+  if (strcmp(k, "dt") == 0 || strcmp(k, "cfl") == 0 || strcmp(k, "t_end") == 0)
+    run_check_steps(L, ls, s->t_end);
   return 0;
 }
 

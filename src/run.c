@@ -262,10 +262,9 @@ static void callbacks(lua_State *L, int simidx, lsim *ls) {
 ** step count comes from the step the run starts with (fixed, or the
 ** CFL step of the fastest wave and particle); a schedule whose interval
 ** makes more than LSIM_MAX_EVENTS events is refused too */
-static void run_check(lua_State *L, int simidx, lsim *ls, double t_end) {
+void run_check_steps(lua_State *L, lsim *ls, double t_end) {
   sim *s = &ls->s;
   double span = t_end - s->t, dt, steps;
-  lua_Integer k, n;
   if (!(span > 0)) return;
   if (!s->started) sim_measure(s); /* the particle speeds */
   dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
@@ -284,6 +283,13 @@ static void run_check(lua_State *L, int simidx, lsim *ls, double t_end) {
                  "take %.3g steps (at most %.0e)", s->t, t_end, s->cfl,
               s->g.h, c, s->vmax, dt, steps, LSIM_MAX_STEPS);
   }
+}
+
+static void run_check(lua_State *L, int simidx, lsim *ls, double t_end) {
+  double span = t_end - ls->s.t;
+  lua_Integer k, n;
+  if (!(span > 0)) return;
+  run_check_steps(L, ls, t_end);
   lsim_check_every(L, "output: field 'every'", ls->out_every, span);
   lsim_check_every(L, "output: checkpoint interval", ls->ck_every, span);
   lsim_uv(L, simidx, "every");

@@ -58,6 +58,11 @@ run run s.lua --quiet --out o; rc=$?
 [ $rc -eq 1 ]; ok $? "dt = 1e-300: refused, no hang" "$(st $rc)"
 refused "  names the line, the field and the step count" "s.lua:2:" "'dt'" "steps"
 
+scene "" "" "" 's:every {steps = 2, fn = function(sim) sim.cfl = 1e-300 end}'
+run run s.lua --quiet --out o; rc=$?
+[ $rc -eq 1 ]; ok $? "sim.cfl = 1e-300 while running: refused, no hang" "$(st $rc)"
+refused "  names the callback's line and the step count" "s.lua:5:" "cfl" "steps"
+
 scene "" "K = 1, G = 1, density = 1e-300"
 run run s.lua --quiet --out o; rc=$?
 [ $rc -eq 1 ]; ok $? "density = 1e-300: refused, no hang" "$(st $rc)"

@@ -83,6 +83,19 @@ static void range(char *buf, size_t n, double lo, double hi, int flags) {
              flags & CHK_OPENHI ? ")" : "]");
 }
 
+/* %g, but NaN as "nan" whatever its sign bit (0/0 prints "-nan") */
+static const char *numstr(char *buf, size_t n, double v) {
+  if (isnan(v)) snprintf(buf, n, "nan");
+  else snprintf(buf, n, "%g", v);
+  return buf;
+}
+
+/* is v outside the range, or not finite? */
+static int outside(double v, double lo, double hi, int flags) {
+  return !isfinite(v) || v < lo || v > hi ||
+         ((flags & CHK_OPENLO) && v == lo) || ((flags & CHK_OPENHI) && v == hi);
+}
+
 double chk_num(lua_State *L, int idx, const char *what, const char *key,
                double def, double lo, double hi, int flags) {
   double v;
@@ -102,14 +115,80 @@ double chk_num(lua_State *L, int idx, const char *what, const char *key,
   lua_pop(L, 1);
   range(r, sizeof r, lo, hi, flags);
   /* lua_pushfstring knows no %g: format the number here */
-  snprintf(got, sizeof got, "%g", v);
-  if (!isfinite(v) || v < lo || v > hi || ((flags & CHK_OPENLO) && v == lo) ||
-      ((flags & CHK_OPENHI) && v == hi))
+  numstr(got, sizeof got, v);
+  if (outside(v, lo, hi, flags))
     luaL_error(L, "%s: field '%s' must be %s (got %s)", what, key, r, got);
   if ((flags & CHK_INT) && v != floor(v))
     luaL_error(L, "%s: field '%s' must be a whole number (got %s)", what, key,
                got);
   return v;
+}
+
+double chk_arg(lua_State *L, int arg, const char *what, const char *name,
+               double def, double lo, double hi, int flags) {
+  double v;
+  char r[80], got[32];
+  int isnum;
+  if (lua_isnoneornil(L, arg)) {
+    if (flags & CHK_REQUIRED)
+      luaL_error(L, "%s: argument '%s' is required (a number)", what, name);
+    return def;
+  }
+  v = lua_tonumberx(L, arg, &isnum);
+  if (!isnum)
+    luaL_error(L, "%s: argument '%s' must be a number (got %s)", what, name,
+               luaL_typename(L, arg));
+  if (outside(v, lo, hi, flags)) {
+    range(r, sizeof r, lo, hi, flags);
+    numstr(got, sizeof got, v);
+    luaL_error(L, "%s: argument '%s' must be %s (got %s)", what, name, r, got);
+  }
+  if ((flags & CHK_INT) && v != floor(v)) {
+    snprintf(got, sizeof got, "%g", v);
+    luaL_error(L, "%s: argument '%s' must be a whole number (got %s)", what,
+               name, got);
+  }
+  return v;
+}
+
+const char *chk_where(lua_State *L, int idx, char *buf, size_t n) {
+  lua_Debug ar;
+  if (lua_type(L, idx) != LUA_TFUNCTION) {
+    snprintf(buf, n, "[C]");
+    return buf;
+  }
+  lua_pushvalue(L, idx);
+  lua_getinfo(L, ">S", &ar); /* pops the function */
+  if (ar.linedefined < 0) snprintf(buf, n, "[C]");
+  else snprintf(buf, n, "%s:%d", ar.short_src, ar.linedefined);
+  return buf;
+}
+
+int chk_fnerror(lua_State *L, int fnidx, const char *fmt, ...) {
+  char where[LUA_IDSIZE + 16], buf[512];
+  va_list ap;
+  va_start(ap, fmt);
+  vsnprintf(buf, sizeof buf, fmt, ap);
+  va_end(ap);
+  chk_where(L, fnidx, where, sizeof where);
+  lua_pushfstring(L, "%s: %s", where, buf);
+  return lua_error(L);
+}
+
+double chk_result(lua_State *L, int idx, int fnidx, const char *fmt, ...) {
+  char what[256], got[32];
+  int isnum;
+  double v = lua_tonumberx(L, idx, &isnum);
+  va_list ap;
+  if (isnum && isfinite(v)) return v;
+  va_start(ap, fmt);
+  vsnprintf(what, sizeof what, fmt, ap);
+  va_end(ap);
+  if (isnum)
+    return chk_fnerror(L, fnidx, "%s returned %s (it must return finite "
+                       "numbers)", what, numstr(got, sizeof got, v));
+  return chk_fnerror(L, fnidx, "%s returned %s (not a number)", what,
+                     luaL_typename(L, idx));
 }
 
 int chk_option(lua_State *L, int idx, const char *what, const char *key,

@@ -29,6 +29,25 @@ int chk_bool(lua_State *L, int idx, const char *what, const char *key,
 /* vector field {x, y}: fills v (defaults kept if absent) */
 void chk_vec(lua_State *L, int idx, const char *what, const char *key,
              double *v, int n, int required);
+/* a number argument of an API function (arg, named name for messages):
+** finite and in [lo, hi] as chk_num's flags say; CHK_REQUIRED unset, def
+** when absent.  "what: argument 'name' must be finite (got nan)" */
+double chk_arg(lua_State *L, int arg, const char *what, const char *name,
+               double def, double lo, double hi, int flags);
+/* where the function at idx was defined: "scene.lua:12" ("[C]" for a C
+** function); buf holds it */
+const char *chk_where(lua_State *L, int idx, char *buf, size_t n);
+/* the value at idx, which the scene function at fnidx returned, as a
+** finite number; else raises "scene.lua:12: WHAT returned nan" (WHAT
+** from fmt, formatted only then), placed where the function was defined:
+** it runs between steps, where no scene line is on the stack */
+double chk_result(lua_State *L, int idx, int fnidx, const char *fmt, ...)
+    __attribute__((format(printf, 4, 5)));
+/* chk_error placed where the function at fnidx was defined, for errors
+** raised between steps about a scene function (no scene line is on the
+** stack then) */
+int chk_fnerror(lua_State *L, int fnidx, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
 /* luaL_error with printf formats (%g, %.3g ...), which luaL_error lacks */
 int chk_error(lua_State *L, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));

@@ -9,10 +9,14 @@
 ** loads, in "mvmpm.overrides"; names a scene declares collect in
 ** "mvmpm.declared".
 */
+#include <fcntl.h>
+#include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
 #include "lauxlib.h"
@@ -40,11 +44,17 @@ void lmvmpm_override(lua_State *L, const char *name, const char *value) {
 
 /* convert an override to the default's type */
 static void convert(lua_State *L, const char *name, int deftype) {
+  if (lua_type(L, -1) == LUA_TNUMBER && !isfinite(lua_tonumber(L, -1)))
+    luaL_error(L, "mvmpm.load: parameter '%s' must be a finite number", name);
   if (lua_type(L, -1) != LUA_TSTRING) return; /* from mvmpm.load: as given */
   if (deftype == LUA_TNUMBER) {
     if (!lua_stringtonumber(L, lua_tostring(L, -1)))
       luaL_error(L, "--set %s=%s: parameter '%s' is a number", name,
                  lua_tostring(L, -1), name);
+    /* 1e400 reads as inf: refused here, where it enters */
+    if (!isfinite(lua_tonumber(L, -1)))
+      luaL_error(L, "--set %s=%s: parameter '%s' must be a finite number",
+                 name, lua_tostring(L, -2), name);
     lua_remove(L, -2);
   } else if (deftype == LUA_TBOOLEAN) {
     const char *s = lua_tostring(L, -1);
@@ -142,27 +152,71 @@ static int traceback(lua_State *L) {
   return 1;
 }
 
-char *lmvmpm_read(const char *path) {
-  FILE *f = fopen(path, "rb");
+/* open path for reading only if it is a regular file: a FIFO or a device
+** would block or never end.  O_NONBLOCK makes the open itself return at
+** once (a FIFO with no writer blocks in open); the descriptor, -1 with
+** the reason in err */
+static int open_regular(const char *path, char *err, size_t errlen) {
+  struct stat st;
+  int fd = open(path, O_RDONLY | O_NONBLOCK);
+  if (fd < 0) {
+    snprintf(err, errlen, "%s: cannot open (%s)", path, strerror(errno));
+    return -1;
+  }
+  if (fstat(fd, &st)) {
+    snprintf(err, errlen, "%s: cannot read (%s)", path, strerror(errno));
+    close(fd);
+    return -1;
+  }
+  if (!S_ISREG(st.st_mode)) {
+    snprintf(err, errlen, "%s: not a regular file (%s)", path,
+             S_ISDIR(st.st_mode) ? "a directory" : S_ISFIFO(st.st_mode) ?
+             "a FIFO" : "a device or socket");
+    close(fd);
+    return -1;
+  }
+  fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  return fd;
+}
+
+int lmvmpm_regular(const char *path, char *err, size_t errlen) {
+  int fd = open_regular(path, err, errlen);
+  if (fd < 0) return -1;
+  close(fd);
+  return 0;
+}
+
+char *lmvmpm_read(const char *path, char *err, size_t errlen) {
+  int fd = open_regular(path, err, errlen);
+  FILE *f = fd < 0 ? NULL : fdopen(fd, "rb");
   char *buf;
   long n;
-  if (!f) return NULL;
+  if (!f) {
+    if (fd >= 0) {
+      snprintf(err, errlen, "%s: cannot read (%s)", path, strerror(errno));
+      close(fd);
+    }
+    return NULL;
+  }
   if (fseek(f, 0, SEEK_END) || (n = ftell(f)) < 0 || fseek(f, 0, SEEK_SET)) {
+    snprintf(err, errlen, "%s: cannot read the scene file", path);
     fclose(f);
     return NULL;
   }
   buf = malloc((size_t)n + 1);
   if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) { free(buf); buf = NULL; }
   if (buf) buf[n] = 0;
+  else snprintf(err, errlen, "%s: cannot read the scene file", path);
   fclose(f);
   return buf;
 }
 
 int lmvmpm_load(lua_State *L, const char *path) {
-  char *src = lmvmpm_read(path);
+  char err[1200];
+  char *src = lmvmpm_read(path, err, sizeof err);
   int r;
   if (!src) {
-    lua_pushfstring(L, "%s: cannot read the scene file", path);
+    lua_pushstring(L, err);
     return -1;
   }
   r = lmvmpm_load_text(L, path, src);

@@ -5,6 +5,7 @@
 #ifndef mvmpm_lmvmpm_h
 #define mvmpm_lmvmpm_h
 
+#include <stddef.h>
 #include "lua.h"
 
 #define MVMPM_VERSION "0.1.0"
@@ -24,7 +25,11 @@ int lmvmpm_load(lua_State *L, const char *path);
 /* the same with the scene's text given (path names it in messages): a
 ** restart runs the very text it compared with the checkpoint's */
 int lmvmpm_load_text(lua_State *L, const char *path, const char *src);
-/* a file's bytes, NUL-terminated (malloc'ed; NULL if unreadable) */
-char *lmvmpm_read(const char *path);
+/* a regular file's bytes, NUL-terminated (malloc'ed); NULL with the
+** reason in err if it cannot be read or is no regular file */
+char *lmvmpm_read(const char *path, char *err, size_t errlen);
+/* 0 if path is a regular file one can open, else -1 with the reason in
+** err: a FIFO or a device would block a reader or never end */
+int lmvmpm_regular(const char *path, char *err, size_t errlen);
 
 #endif

@@ -62,7 +62,22 @@ typedef struct lbody {
   int idx;
 } lbody;
 
+/* what a run may need before it is refused as one that would not end */
+#define LSIM_MAX_STEPS 1e12   /* steps to t_end */
+#define LSIM_MAX_EVENTS 1e9   /* outputs, checkpoints, calls of a callback */
+
 /* lua_sim.c */
+extern const char *const lsim_side_names[];  /* "left", "right", ... */
+/* refuse a velocity v (DIM components) that the step cannot follow: its
+** CFL step would need more than LSIM_MAX_STEPS steps to t_end.  fnidx: the
+** scene function that gave it (the error names where it was defined), or
+** 0 (the calling scene line); what names it, formatted only on failure */
+void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,
+                      const char *fmt, ...) __attribute__((format(printf, 5, 6)));
+/* refuse an interval every (> 0) that makes more than LSIM_MAX_EVENTS
+** events in a span of simulated time; what names it for the message */
+void lsim_check_every(lua_State *L, const char *what, double every,
+                      double span);
 /* the simulation at idx, set up and not closed, else a Lua error */
 lsim *lsim_check(lua_State *L, int idx);
 /* mark ls busy until the calling C function returns or raises: pushes a
@@ -106,6 +121,9 @@ int lrender_sim(lua_State *L);
 void lrender_open(lua_State *L, int modidx);
 /* run.c */
 int run_until(lua_State *L, int simidx, double t_end, long max_steps);
+/* refuse a run to t_end that would need more than LSIM_MAX_STEPS steps
+** of the step it would start with (fixed, or the CFL step) */
+void run_check_steps(lua_State *L, lsim *ls, double t_end);
 /* mkdir -p; 0, or -1 with err naming the directory and the reason */
 int run_mkdirs(const char *path, char *err, size_t errlen);
 /* flush the diagnostics table to disk; its length in bytes, -1 if none */

@@ -172,7 +172,12 @@ void lstate_save(lua_State *L, int idx) {
   }
   if (r == 0) lua_pushlstring(L, w.b ? w.b : "", w.n);
   free(w.b);
-  if (r) luaL_error(L, "sim:state: %s", w.err);
+  if (r) { /* at checkpoint time: named where sim:state took the table */
+    lua_getfield(L, LUA_REGISTRYINDEX, LSTATE_WHERE);
+    if (lua_istable(L, -1) && lua_rawgetp(L, -1, lua_topointer(L, idx)) == LUA_TSTRING)
+      luaL_error(L, "%ssim:state: %s", lua_tostring(L, -1), w.err);
+    luaL_error(L, "sim:state: %s", w.err);
+  }
 }
 
 /*

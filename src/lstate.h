@@ -14,6 +14,10 @@
 #include <stddef.h>
 #include "lua.h"
 
+/* registry table: state table (by address) -> "scene.lua:7: ", where
+** sim:state registered it, so that a save's error names the scene line */
+#define LSTATE_WHERE "mvmpm.statewhere"
+
 /* push the table at idx as a string of bytes; raises a Lua error (the
 ** message names the offending entry) when it holds what cannot be saved */
 void lstate_save(lua_State *L, int idx);

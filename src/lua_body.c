@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "diag.h"
+#include "interrupt.h"
 #include "lcheck.h"
 #include "lsim.h"
 #include "thermal.h"
@@ -164,7 +165,12 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
 #if DIM == 2
   {
     int i, j;
-    for (j = i0[1]; j < i1[1]; j++)
+    for (j = i0[1]; j < i1[1]; j++) {
+      /* a large lattice takes a while: Ctrl-C is heard per row */
+      if (interrupt_pending()) {
+        interrupt_clear();
+        luaL_error(L, "interrupted while seeding body '%s'", lua_tostring(L, -1));
+      }
       for (i = i0[0]; i < i1[0]; i++) {
         int iw = ((i % N[0]) + N[0]) % N[0], jw = ((j % N[1]) + N[1]) % N[1];
         size_t k = (size_t)iw + (size_t)N[0] * jw;
@@ -191,6 +197,7 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
         (*taken)[(*ntaken)++] = k;
         seed_push(L, sd, x, vol);
       }
+    }
   }
 #endif
   (void)bodyid;
@@ -211,7 +218,7 @@ static void seed_points(lua_State *L, lsim *ls, seed *sd) {
   }
   lua_getfield(L, -1 - DIM, "volume");
   tv = lua_type(L, -1);
-  if (tv == LUA_TNUMBER) vdef = lua_tonumber(L, -1);
+  if (tv == LUA_TNUMBER) vdef = lua_tonumber(L, -1); /* checked below */
   else if (tv != LUA_TNIL && tv != LUA_TTABLE)
     luaL_error(L, "body: points.volume must be a number or a list");
   /* stack: points, x, y, volume */
@@ -231,8 +238,8 @@ static void seed_points(lua_State *L, lsim *ls, seed *sd) {
       vol = lua_tonumber(L, -1);
       lua_pop(L, 1);
     }
-    if (!(vol > 0))
-      chk_error(L, "body: point %d has volume %g; volumes must be > 0", (int)k,
+    if (!(vol > 0) || !isfinite(vol))
+      chk_error(L, "body: point %d has volume %g; volumes must be finite and > 0", (int)k,
                  vol);
     for (d = 0; d < DIM; d++)
       if (x[d] < ls->s.g.lo[d] || x[d] >= ls->s.g.hi[d])
@@ -262,6 +269,8 @@ static void drive_spec(lua_State *L, lsim *ls, int simidx, int b) {
   } else {
     lua_pop(L, 1);
     chk_vec(L, 2, "body", "driven", bd->vdrive, DIM, 1);
+    lsim_check_speed(L, ls, bd->vdrive, 0, "body '%s': field 'driven'",
+                     bd->name);
   }
 }
 
@@ -295,6 +304,20 @@ static seedbox *seedbox_new(lua_State *L) {
   }
   lua_setmetatable(L, -2);
   return bx;
+}
+
+/* refuse a material whose wave speed makes a step too small to reach
+** t_end (a fixed dt sets the step itself: sim{} checked it) */
+static void material_speed(lua_State *L, lsim *ls, int mi, const char *name) {
+  const sim *s = &ls->s;
+  const material *m = &s->mats[mi];
+  double dt = s->cfl * s->g.h / m->c, steps = s->t_end / dt;
+  if (s->dt_fixed > 0 || steps <= LSIM_MAX_STEPS) return;
+  chk_error(L, "body '%s': material '%s' has the wave speed sqrt((K + 4G/3) "
+               "/ density) = %g (K = %g, G = %g, density = %g): its step "
+               "cfl * cell / speed = %g would take %.3g steps to t_end = %g "
+               "(at most %.0e)", name, m->name, m->c, m->K, m->G, m->rho, dt,
+            steps, s->t_end, LSIM_MAX_STEPS);
 }
 
 /* r along d as the nearest image where d is periodic */
@@ -340,6 +363,7 @@ int lbody_new(lua_State *L) {
                name, luaL_typename(L, -1));
   mi = matindex(L, 1, lua_gettop(L));
   lua_pop(L, 1);
+  material_speed(L, ls, mi, name);
   lua_getfield(L, 2, "velocity");
   vfun = lua_isfunction(L, -1);
   lua_pop(L, 1);
@@ -406,28 +430,31 @@ int lbody_new(lua_State *L) {
     for (d = 0; d < DIM; d++) c[d] += near(s, d, bx->sd.x[DIM * k + d] - bx->sd.x[d]) / bx->sd.n;
   for (d = 0; d < DIM; d++) c[d] += bx->sd.x[d];
   first = s->ps.n;
+  if (vfun) lua_getfield(L, 2, "velocity"); /* stays while seeding */
   for (k = 0; k < bx->sd.n; k++) {
     double *x = &bx->sd.x[DIM * k], v[DIM];
     for (d = 0; d < DIM; d++) v[d] = v0[d];
     v[0] -= omega * near(s, 1, x[1] - c[1]);
     v[1] += omega * near(s, 0, x[0] - c[0]);
     if (vfun) { /* velocity = function(x, y) return vx, vy end */
-      lua_getfield(L, 2, "velocity");
+      int fn = lua_gettop(L);
+      lua_pushvalue(L, fn);
       for (d = 0; d < DIM; d++) lua_pushnumber(L, x[d]);
       lua_call(L, DIM, DIM);
-      for (d = 0; d < DIM; d++) {
-        int isnum;
-        v[d] += lua_tonumberx(L, d - DIM, &isnum);
-        if (!isnum) {
-          luaL_error(L, "body '%s': velocity function must return %d numbers", name, DIM);
-        }
-      }
+      for (d = 0; d < DIM; d++)
+        v[d] += chk_result(L, d - DIM, fn, "velocity of body '%s' at (%g, %g)",
+                           name, x[0], x[1]);
+      lsim_check_speed(L, ls, v, fn, "velocity of body '%s' at (%g, %g)",
+                       name, x[0], x[1]);
       lua_pop(L, DIM);
-    }
+    } else
+      lsim_check_speed(L, ls, v, 0, "body '%s': velocity at (%g, %g)", name,
+                       x[0], x[1]);
     if (sim_add_particle(s, b, x, v, bx->sd.vol[k] * scale) < 0) {
       luaL_error(L, "body: out of memory for particles");
     }
   }
+  if (vfun) lua_pop(L, 1);
   if (s->faff >= 0 && omega != 0) { /* APIC: the rigid spin is affine */
     double *c01 = particles_comp(&s->ps, s->faff, 1);
     double *c10 = particles_comp(&s->ps, s->faff, 2);
@@ -535,10 +562,15 @@ static int bforce(lua_State *L) {
 /* b:drive(vx, vy): set a driven body's velocity from now on */
 static int bdrive(lua_State *L) {
   lbody *lb = checkbody(L, 1);
+  static const char *const arg[] = {"vx", "vy", "vz"};
   body *b = &lb->ls->s.bodies[lb->idx];
+  double v[DIM];
   int d;
   if (!b->driven) luaL_error(L, "body '%s' is not driven (give it driven = {...})", b->name);
-  for (d = 0; d < DIM; d++) b->vdrive[d] = luaL_checknumber(L, 2 + d);
+  for (d = 0; d < DIM; d++)
+    v[d] = chk_arg(L, 2 + d, "drive", arg[d], 0, -HUGE_VAL, HUGE_VAL, CHK_REQUIRED);
+  lsim_check_speed(L, lb->ls, v, 0, "drive of body '%s'", b->name);
+  for (d = 0; d < DIM; d++) b->vdrive[d] = v[d];
   return 0;
 }
 

@@ -4,11 +4,14 @@
 ** line, the field and its allowed range.
 */
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "diag_overlap.h"
 #include "lcheck.h"
 #include "lsim.h"
+#include "lstate.h"
 #include "sandbox.h"
 #include "shape.h"
 
@@ -65,8 +68,38 @@ void lsim_uv(lua_State *L, int idx, const char *field) {
   lua_remove(L, -2);
 }
 
-static const char *const side_names[] = {"left", "right", "bottom", "top",
-                                         "back", "front", NULL};
+const char *const lsim_side_names[] = {"left", "right", "bottom", "top",
+                                       "back", "front", NULL};
+
+void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,
+                      const char *fmt, ...) {
+  const sim *s = &ls->s;
+  double speed = 0, span = s->t_end > s->t ? s->t_end - s->t : 0, steps;
+  char what[256], msg[512];
+  va_list ap;
+  int d;
+  for (d = 0; d < DIM; d++) speed = hypot(speed, v[d]);
+  steps = span * speed / (s->cfl * s->g.h);
+  /* 1e150: squared, a speed stays finite */
+  if (speed <= 1e150 && steps <= LSIM_MAX_STEPS) return;
+  va_start(ap, fmt);
+  vsnprintf(what, sizeof what, fmt, ap);
+  va_end(ap);
+  snprintf(msg, sizeof msg, "%s: a speed of %g is more than the step can "
+           "follow: its CFL step cfl * cell / speed = %g would need %.3g "
+           "steps to t_end = %g (at most %.0e)", what, speed,
+           s->cfl * s->g.h / speed, steps, s->t_end, LSIM_MAX_STEPS);
+  if (fnidx) chk_fnerror(L, fnidx, "%s", msg);
+  luaL_error(L, "%s", msg);
+}
+
+void lsim_check_every(lua_State *L, const char *what, double every,
+                      double span) {
+  if (every > 0 && span / every > LSIM_MAX_EVENTS)
+    chk_error(L, "%s = %g would make %.3g events in %g of simulated time "
+                 "(at most %.0e): give at least %g", what, every, span / every,
+              span, LSIM_MAX_EVENTS, span / LSIM_MAX_EVENTS);
+}
 static const char *const side_kinds[] = {"free", "wall", "periodic", NULL};
 
 /* one side: "wall" | "free" | "periodic" | {"wall", friction=, velocity=} */
@@ -76,7 +109,7 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
   side *sd = &ls->s.sides[k];
   char what[48];
   int kind;
-  snprintf(what, sizeof what, "sides.%s", side_names[k]);
+  snprintf(what, sizeof what, "sides.%s", lsim_side_names[k]);
   sd->mu = 0;
   if (lua_type(L, idx) == LUA_TSTRING) {
     lua_newtable(L);
@@ -251,11 +284,11 @@ int lsim_new(lua_State *L) {
       }
     } else if (lua_istable(L, sidx)) {
       const char *sk[NSIDES + 1]; /* the sides this dimension has */
-      for (k = 0; k < NSIDES; k++) sk[k] = side_names[k];
+      for (k = 0; k < NSIDES; k++) sk[k] = lsim_side_names[k];
       sk[NSIDES] = NULL;
       chk_keys(L, sidx, "sides", sk);
       for (k = 0; k < NSIDES; k++) {
-        lua_getfield(L, sidx, side_names[k]);
+        lua_getfield(L, sidx, lsim_side_names[k]);
         if (lua_isnil(L, -1)) { lua_pop(L, 1); lua_pushstring(L, "wall"); }
         side_spec(L, ls, simidx, k, lua_gettop(L), periodic);
         lua_pop(L, 1);
@@ -265,7 +298,7 @@ int lsim_new(lua_State *L) {
     for (d = 0; d < DIM; d++) {
       if (periodic[2 * d] != periodic[2 * d + 1])
         luaL_error(L, "sim: sides.%s and sides.%s must both be periodic or neither",
-                   side_names[2 * d], side_names[2 * d + 1]);
+                   lsim_side_names[2 * d], lsim_side_names[2 * d + 1]);
       pdim[d] = periodic[2 * d];
     }
     {
@@ -302,6 +335,15 @@ int lsim_new(lua_State *L) {
     s->dt_fixed = chk_num(L, 1, what, "dt", 0, 0, HUGE_VAL, 0);
     s->t_end = chk_num(L, 1, what, "t_end", 1.0, 0, HUGE_VAL, 0);
     chk_vec(L, 1, what, "gravity", s->gravity, DIM, 0);
+    /* now that the step's terms are known */
+    for (k = 0; k < NSIDES; k++)
+      lsim_check_speed(L, ls, s->sides[k].v, 0, "sim: sides.%s velocity",
+                       lsim_side_names[k]);
+    if (s->dt_fixed > 0 && s->t_end / s->dt_fixed > LSIM_MAX_STEPS)
+      chk_error(L, "sim: field 'dt' = %g would take %.3g steps to t_end = %g "
+                   "(at most %.0e); give 'dt' >= %g", s->dt_fixed,
+                s->t_end / s->dt_fixed, s->t_end, LSIM_MAX_STEPS,
+                s->t_end / LSIM_MAX_STEPS);
     s->sort_every = (int)chk_num(L, 1, what, "sort_every", 20, 0, 1e9, CHK_INT);
     s->mcut_rel = chk_num(L, 1, what, "mass_cutoff", 1e-9, 0, 1, 0);
     sim_set_threads(s, (int)chk_num(L, 1, what, "threads", lsim_env_threads(),
@@ -401,6 +443,7 @@ static int levery(lua_State *L) {
   n = chk_num(L, 2, "every", "steps", 0, 0, 1e15, CHK_INT);
   if ((dt > 0) == (n > 0))
     luaL_error(L, "every: give exactly one of 'time' (> 0) and 'steps' (> 0)");
+  lsim_check_every(L, "every: field 'time'", dt, ls->s.t_end - ls->s.t);
   lua_getfield(L, 2, "fn");
   if (!lua_isfunction(L, -1)) luaL_error(L, "every: field 'fn' must be a function(sim)");
   lua_pop(L, 1);
@@ -442,6 +485,10 @@ static int loutput(lua_State *L) {
   ls->ck_every = chk_num(L, 2, "output", "checkpoint", ls->ck_every, 0,
                          HUGE_VAL, 0);
   ls->out_every = chk_num(L, 2, "output", "every", ls->out_every, 0, HUGE_VAL, 0);
+  lsim_check_every(L, "output: field 'checkpoint'", ls->ck_every,
+                   ls->s.t_end - ls->s.t);
+  lsim_check_every(L, "output: field 'every'", ls->out_every,
+                   ls->s.t_end - ls->s.t);
   ls->csv_every = (long)chk_num(L, 2, "output", "csv_every",
                                 ls->csv_every ? (double)ls->csv_every : 1, 0, 1e15,
                                 CHK_INT);
@@ -461,7 +508,10 @@ static int lstep(lua_State *L) {
 
 static int lrun(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
-  double t = luaL_optnumber(L, 2, ls->s.t_end);
+  double t = chk_arg(L, 2, "run", "t", ls->s.t_end, -HUGE_VAL, HUGE_VAL, 0);
+  if (t < ls->s.t)
+    chk_error(L, "run: t = %g lies before the simulation's time %g (a run "
+                 "goes forward)", t, ls->s.t);
   lsim_hold(L, ls);
   run_until(L, 1, t, -1);
   lua_pushnumber(L, ls->s.t);
@@ -533,6 +583,15 @@ static int lstate(lua_State *L) {
   lua_pop(L, 1);
   lua_pushvalue(L, 2);
   lua_setfield(L, -2, "state");
+  /* a save at checkpoint time runs where no scene line is on the stack */
+  if (lua_getfield(L, LUA_REGISTRYINDEX, LSTATE_WHERE) != LUA_TTABLE) {
+    lua_pop(L, 1);
+    lua_newtable(L);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, LUA_REGISTRYINDEX, LSTATE_WHERE);
+  }
+  luaL_where(L, 1);
+  lua_rawsetp(L, -2, lua_topointer(L, 2));
   lua_settop(L, 2);
   return 1;
 }
@@ -578,7 +637,7 @@ static int lwall_force(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   const char *name = luaL_checkstring(L, 2);
   int k, d;
-  for (k = 0; k < NSIDES && strcmp(side_names[k], name) != 0; k++) {}
+  for (k = 0; k < NSIDES && strcmp(lsim_side_names[k], name) != 0; k++) {}
   if (k == NSIDES)
     luaL_error(L, "wall_force: no side '%s' (the sides are left, right, "
                   "bottom, top%s)", name, DIM == 3 ? ", back, front" : "");
@@ -674,6 +733,10 @@ static int lnewindex(lua_State *L) {
   else if (strcmp(k, "progress") == 0) ls->progress = lua_toboolean(L, 3);
   else if (strcmp(k, "threads") == 0)
     sim_set_threads(s, (int)chk_num(L, 4, "sim", k, 1, 1, PAR_MAX, CHK_INT));
+  /* a step made too small (or an end too far) while running: refused
+  ** here, where the number enters */
+  if (strcmp(k, "dt") == 0 || strcmp(k, "cfl") == 0 || strcmp(k, "t_end") == 0)
+    run_check_steps(L, ls, s->t_end);
   return 0;
 }
 

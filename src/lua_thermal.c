@@ -10,25 +10,21 @@
 */
 #include <math.h>
 #include <stdio.h>
+#include "lcheck.h"
 #include "lsim.h"
 #include "thermal.h"
 
 /* the uniform temperature a function gives at time t; checked */
 double lsim_temperature_at(lua_State *L, int simidx, double t) {
   double T;
-  int isnum;
+  int fn;
   lsim_uv(L, simidx, "temperature");
+  fn = lua_gettop(L);
+  lua_pushvalue(L, fn);
   lua_pushnumber(L, t);
   lua_call(L, 1, 1);
-  T = lua_tonumberx(L, -1, &isnum);
-  if (!isnum || !isfinite(T)) {
-    char at[32];
-    snprintf(at, sizeof at, "%g", t);
-    luaL_error(L, "temperature function returned %s at t = %s; it must "
-                  "return a finite number", isnum ? "a non-finite number"
-                                                  : luaL_typename(L, -1), at);
-  }
-  lua_pop(L, 1);
+  T = chk_result(L, -1, fn, "temperature function at t = %g", t);
+  lua_pop(L, 2);
   return T;
 }
 
@@ -54,9 +50,7 @@ int lsim_temperature(lua_State *L) {
     lua_setfield(L, -2, "temperature");
     lua_pop(L, 1);
     ls->tempfn = 0;
-    T = lua_tonumber(L, 2);
-    if (!isfinite(T))
-      luaL_error(L, "temperature: the temperature must be a finite number");
+    T = chk_arg(L, 2, "temperature", "T", 0, -HUGE_VAL, HUGE_VAL, 0);
   } else
     return luaL_error(L, "temperature: give a number or a function(t) "
                          "returning the temperature (got %s)",

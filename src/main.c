@@ -250,12 +250,13 @@ static int restart_prepare(lua_State *L, runopts *o, ckpt *c, char *outdir,
 ** the text (malloc'ed), or NULL after printing why.
 */
 static char *restart_scene_text(const ckpt *c, const char *scene) {
-  char *src = ckpt_string(c, CB_SOURCE), *file = lmvmpm_read(scene);
+  char err[1200];
+  char *src = ckpt_string(c, CB_SOURCE), *file = lmvmpm_read(scene, err, sizeof err);
   int same = src && file && strcmp(src, file) == 0;
   if (!src)
     fprintf(stderr, "%s: out of memory\n", progname);
   else if (!file)
-    fprintf(stderr, "%s: %s: cannot read the scene file\n", progname, scene);
+    fprintf(stderr, "%s: %s\n", progname, err);
   else if (!same)
     fprintf(stderr, "%s: %s is not the scene %s was written from (its text "
             "differs); a changed scene cannot continue the run, and none of "
@@ -350,9 +351,17 @@ static int cmd_run(int argc, char **argv) {
   ckpt c;
   memset(&c, 0, sizeof c);
   particles_init(&c.ps);
-  if (options(L, argc, argv, 2, &o, 1)) return 2;
-  if (!o.scene && !o.restart) { usage(stderr); return 2; }
+  if (options(L, argc, argv, 2, &o, 1)) { lua_close(L); return 2; }
+  if (!o.scene && !o.restart) { usage(stderr); lua_close(L); return 2; }
   if (o.restart) {
+    struct stat st;
+    /* a checkpoint that is no regular file (a FIFO) would block its reader */
+    if (!(stat(o.restart, &st) == 0 && S_ISDIR(st.st_mode)) &&
+        lmvmpm_regular(o.restart, err, sizeof err)) {
+      fprintf(stderr, "%s: %s\n", progname, err);
+      lua_close(L);
+      return 1;
+    }
     if (restart_prepare(L, &o, &c, root, sizeof root) ||
         restart_sandbox(&o, &c) ||
         (!o.scene && !(o.scene = stored_scene = ckpt_string(&c, CB_SCENE))) ||
@@ -388,6 +397,16 @@ static int cmd_run(int argc, char **argv) {
   }
   free(text);
   ls = lua_touserdata(L, -1);
+  if (o.ck_every > 0 && (ls->s.t_end - ls->s.t) / o.ck_every > LSIM_MAX_EVENTS) {
+    fprintf(stderr, "%s: --checkpoint-every %g would write %.3g checkpoints "
+            "to t_end = %g (at most %.0e): give at least %g\n", progname,
+            o.ck_every, (ls->s.t_end - ls->s.t) / o.ck_every, ls->s.t_end,
+            LSIM_MAX_EVENTS, (ls->s.t_end - ls->s.t) / LSIM_MAX_EVENTS);
+    ckpt_free(&c);
+    free(stored_scene);
+    lua_close(L);
+    return 1;
+  }
   if (o.restart || o.sandbox || o.out) { /* the command line decides */
     snprintf(ls->outdir, sizeof ls->outdir, "%s", root);
     ls->out_enabled = 1;
@@ -494,7 +513,7 @@ static int cmd_repl(int argc, char **argv) {
   lua_State *L = newstate(argv[0]);
   char hist[1024];
   const char *home = getenv("HOME");
-  if (options(L, argc, argv, 2, &o, 0)) return 2;
+  if (options(L, argc, argv, 2, &o, 0)) { lua_close(L); return 2; }
   scene = o.scene;
   out = o.out;
   if (luaL_dostring(L, "require 'mvmpm.repl'"))
@@ -502,7 +521,11 @@ static int cmd_repl(int argc, char **argv) {
   lua_settop(L, 0);
   if (scene) {
     lsim *ls;
-    if (lmvmpm_load(L, scene) || lmvmpm_check_overrides(L)) return fail(L, NULL);
+    if (lmvmpm_load(L, scene) || lmvmpm_check_overrides(L)) {
+      fail(L, NULL);
+      lua_close(L);
+      return 1;
+    }
     ls = lua_touserdata(L, -1);
     if (out) { snprintf(ls->outdir, sizeof ls->outdir, "%s", out); ls->out_enabled = 1; }
     ls->progress = 1;
@@ -561,8 +584,12 @@ static int cmd_test(int argc, char **argv) {
     fflush(stdout);
     lua_pushboolean(L, 1);
     lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.testing");
+    char err[1200];
     lua_pushcfunction(L, traceback);
-    if (luaL_loadfile(L, files[k]) || lua_pcall(L, 0, 0, 1)) {
+    if (lmvmpm_regular(files[k], err, sizeof err)) { /* a FIFO would block */
+      printf("FAIL %s\n", err);
+      f++;
+    } else if (luaL_loadfile(L, files[k]) || lua_pcall(L, 0, 0, 1)) {
       printf("FAIL %s: %s\n", files[k], lua_tostring(L, -1));
       f++;
     }

@@ -169,49 +169,69 @@ static void out_start(lua_State *L, lsim *ls) {
   }
 }
 
-/* drives and moving walls given as functions of time */
+/* drives and moving walls given as functions of time; what they return
+** is checked here, and an error names where the function was defined
+** (between steps no scene line is on the stack) */
 static void drives(lua_State *L, int simidx, lsim *ls) {
   int d, k;
   if (ls->drives) {
     lsim_uv(L, simidx, "drives");
     lua_pushnil(L);
     while (lua_next(L, -2)) {
-      int b = (int)lua_tointeger(L, -2);
+      int b = (int)lua_tointeger(L, -2), fn = lua_gettop(L);
+      const char *name = ls->s.bodies[b].name;
+      double v[DIM];
+      lua_pushvalue(L, fn);
       lua_pushnumber(L, ls->s.t);
       lua_call(L, 1, DIM);
-      for (d = 0; d < DIM; d++) {
-        int isnum;
-        double v = lua_tonumberx(L, d - DIM, &isnum);
-        if (!isnum || !isfinite(v))
-          chk_error(L, "drive of body '%s' returned a non-number at t = %g",
-                     ls->s.bodies[b].name, ls->s.t);
-        ls->s.bodies[b].vdrive[d] = v;
-      }
-      lua_pop(L, DIM);
+      for (d = 0; d < DIM; d++)
+        v[d] = chk_result(L, d - DIM, fn, "drive of body '%s' at t = %g",
+                          name, ls->s.t);
+      lsim_check_speed(L, ls, v, fn, "drive of body '%s' at t = %g", name,
+                       ls->s.t);
+      for (d = 0; d < DIM; d++) ls->s.bodies[b].vdrive[d] = v[d];
+      lua_pop(L, DIM + 1);
     }
     lua_pop(L, 1);
   }
   if (ls->sidefns) {
     lsim_uv(L, simidx, "sidefn");
     for (k = 0; k < NSIDES; k++) {
+      int fn;
+      double v[DIM];
       if (lua_rawgeti(L, -1, k) != LUA_TFUNCTION) { lua_pop(L, 1); continue; }
+      fn = lua_gettop(L);
+      lua_pushvalue(L, fn);
       lua_pushnumber(L, ls->s.t);
       lua_call(L, 1, DIM);
-      for (d = 0; d < DIM; d++) {
-        int isnum;
-        double v = lua_tonumberx(L, d - DIM, &isnum);
-        if (!isnum || !isfinite(v))
-          chk_error(L, "velocity of side %d returned a non-number at t = %g", k + 1, ls->s.t);
-        if (d == k / 2 && v != 0)
-          chk_error(L, "velocity of side %d at t = %g: the wall slides along "
-                       "its own line, so the %c component must be 0 (got %g)",
-                    k + 1, ls->s.t, "xyz"[d], v);
-        ls->s.sides[k].v[d] = v;
-      }
-      lua_pop(L, DIM);
+      for (d = 0; d < DIM; d++)
+        v[d] = chk_result(L, d - DIM, fn, "velocity of side '%s' at t = %g",
+                          lsim_side_names[k], ls->s.t);
+      if (v[k / 2] != 0)
+        chk_fnerror(L, fn, "velocity of side '%s' at t = %g: the wall "
+                    "slides along its own line, so the %c component must "
+                    "be 0 (got %g)", lsim_side_names[k], ls->s.t,
+                    "xyz"[k / 2], v[k / 2]);
+      lsim_check_speed(L, ls, v, fn, "velocity of side '%s' at t = %g",
+                       lsim_side_names[k], ls->s.t);
+      for (d = 0; d < DIM; d++) ls->s.sides[k].v[d] = v[d];
+      lua_pop(L, DIM + 1);
     }
     lua_pop(L, 1);
   }
+}
+
+/* the next time of a schedule next, next + every, ... that lies after t
+** (tol absorbs rounding).  A step longer than the interval skips the
+** times it covered in one jump, not one by one: there is at most one
+** event per step, and a tiny interval costs nothing extra */
+static double sched_next(double next, double every, double t, double tol) {
+  next += every;
+  if (next > t + tol) return next;
+  next += every * (floor((t + tol - next) / every) + 1);
+  if (!(next > t + tol)) next = t + tol + every; /* every below t's ulp */
+  if (!(next > t)) next = nextafter(t, HUGE_VAL);
+  return next;
 }
 
 static void callbacks(lua_State *L, int simidx, lsim *ls) {
@@ -227,9 +247,7 @@ static void callbacks(lua_State *L, int simidx, lsim *ls) {
       lua_getfield(L, -2, "next");
       due = ls->s.t >= lua_tonumber(L, -1) - 1e-12 * dt;
       if (due) {
-        double next = lua_tonumber(L, -1);
-        while (next <= ls->s.t + 1e-12 * dt) next += dt;
-        lua_pushnumber(L, next);
+        lua_pushnumber(L, sched_next(lua_tonumber(L, -1), dt, ls->s.t, 1e-12 * dt));
         lua_setfield(L, -4, "next");
       }
     } else {
@@ -250,6 +268,51 @@ static void callbacks(lua_State *L, int simidx, lsim *ls) {
       lua_call(L, 1, 0);
     }
     lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+}
+
+/* before a run to t_end: refuse what would not finish, naming why.  The
+** step count comes from the step the run starts with (fixed, or the
+** CFL step of the fastest wave and particle); a schedule whose interval
+** makes more than LSIM_MAX_EVENTS events is refused too */
+void run_check_steps(lua_State *L, lsim *ls, double t_end) {
+  sim *s = &ls->s;
+  double span = t_end - s->t, dt, steps;
+  if (!(span > 0)) return;
+  if (!s->started) sim_measure(s); /* the particle speeds */
+  dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  steps = span / dt;
+  if (!(steps <= LSIM_MAX_STEPS)) {
+    double c = 0;
+    int m;
+    for (m = 0; m < s->nmat; m++)
+      if (s->mats[m].c > c) c = s->mats[m].c;
+    if (s->dt_fixed > 0)
+      chk_error(L, "run: from t = %g to t = %g steps of dt = %g would take "
+                   "%.3g steps (at most %.0e); give a larger 'dt'", s->t,
+                t_end, dt, steps, LSIM_MAX_STEPS);
+    chk_error(L, "run: from t = %g to t = %g the step cfl * cell / (wave "
+                 "speed + particle speed) = %g * %g / (%g + %g) = %g would "
+                 "take %.3g steps (at most %.0e)", s->t, t_end, s->cfl,
+              s->g.h, c, s->vmax, dt, steps, LSIM_MAX_STEPS);
+  }
+}
+
+static void run_check(lua_State *L, int simidx, lsim *ls, double t_end) {
+  double span = t_end - ls->s.t;
+  lua_Integer k, n;
+  if (!(span > 0)) return;
+  run_check_steps(L, ls, t_end);
+  lsim_check_every(L, "output: field 'every'", ls->out_every, span);
+  lsim_check_every(L, "output: checkpoint interval", ls->ck_every, span);
+  lsim_uv(L, simidx, "every");
+  n = luaL_len(L, -1);
+  for (k = 1; k <= n; k++) {
+    lua_rawgeti(L, -1, k);
+    lua_getfield(L, -1, "time");
+    lsim_check_every(L, "every: field 'time'", lua_tonumber(L, -1), span);
+    lua_pop(L, 2);
   }
   lua_pop(L, 1);
 }
@@ -277,6 +340,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   int show = ls->progress && isatty(2);
   simidx = lua_absindex(L, simidx);
   if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
+  if (isfinite(t_end)) run_check(L, simidx, ls, t_end);
   out_start(L, ls);
   prof_start(s->prof);
   /* t_end = HUGE_VAL (sim:step) would make the tolerance inf - inf = NaN */
@@ -296,12 +360,12 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     prof_mark(s->prof, PROF_DIAG);
     if (ls->csv_open && ls->out_every > 0 && s->t >= ls->out_next - 1e-9 * ls->out_every) {
       snapshot(L, ls);
-      while (ls->out_next <= s->t + 1e-9 * ls->out_every) ls->out_next += ls->out_every;
+      ls->out_next = sched_next(ls->out_next, ls->out_every, s->t, 1e-9 * ls->out_every);
     }
     /* checkpoints do not change the steps: one is written at the first
     ** step boundary at or after its time */
     if (ls->csv_open && ls->ck_every > 0 && s->t >= ls->ck_next - 1e-9 * ls->ck_every) {
-      while (ls->ck_next <= s->t + 1e-9 * ls->ck_every) ls->ck_next += ls->ck_every;
+      ls->ck_next = sched_next(ls->ck_next, ls->ck_every, s->t, 1e-9 * ls->ck_every);
       ckpt_write(L, simidx);
     }
     if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 0);

@@ -16,17 +16,26 @@ DEB_PACKAGES = build-essential pkg-config liblua5.4-dev libhdf5-dev hdf5-tools \
 
 PKGS   = lua5.4 hdf5 libedit zlib
 CC    ?= cc
-WARN   = -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter -Wno-format-truncation
+# the same warnings, as errors, in every build; -Wformat-truncation is
+# gcc's alone (clang refuses to hear of it)
+WARNCOM = -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
+WARN   = $(WARNCOM) -Wno-format-truncation
 OPT    = -O3 -march=native
+# undefined behaviour stops the run at the first report: gcc's
+# "undefined" leaves out float-cast-overflow (a NaN or 1e308 cast to an
+# int), so it is named; float-divide-by-zero is not checked, the engine
+# divides by a zero on purpose (a NaN or inf that a later check reports)
+UBSAN  = -fsanitize=address,undefined,float-cast-overflow -fno-sanitize-recover=all
+export UBSAN_OPTIONS ?= halt_on_error=1:print_stacktrace=1
 ifeq ($(FUZZ),1)
 CC     = clang
-WARN   = -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
+WARN   = $(WARNCOM)
 BUILD  = build-fuzz
-OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link,address,undefined
+OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=fuzzer-no-link $(UBSAN)
 BIN    = $(BUILD)/mvmpm
 else ifeq ($(SAN),1)
 BUILD  = build-san
-OPT    = -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined -fno-sanitize-recover=undefined
+OPT    = -O1 -g -fno-omit-frame-pointer $(UBSAN)
 BIN    = $(BUILD)/mvmpm
 else ifeq ($(TSAN),1)
 BUILD  = build-tsan
@@ -96,14 +105,14 @@ clean:
 	rm -rf build build-san build-tsan build-fuzz mvmpm
 
 # the scene loader and Lua API under libFuzzer (clang), ASan and UBSan,
-# seeded with the scenes; FUZZ_SECONDS (default 120) of fuzzing, the run
-# counts printed by libFuzzer at the end
+# seeded with the scenes and tests/fuzz/seeds (the corpus in
+# build-fuzz/corpus is kept between runs); FUZZ_SECONDS (default 120)
+# of fuzzing.  A clean run prints libFuzzer's counts; a finding prints
+# the sanitizer's report and the reproducer's path and fails
 FUZZ_SECONDS ?= 120
 fuzz:
 	@$(MAKE) --no-print-directory FUZZ=1 build-fuzz/fuzz_scene
-	@mkdir -p build-fuzz/corpus build-fuzz/fuzz-out && cp scenarios/*.lua build-fuzz/corpus/
-	cd build-fuzz && ./fuzz_scene -max_total_time=$(FUZZ_SECONDS) -rss_limit_mb=2048 \
-	  -timeout=10 -max_len=8192 corpus 2>&1 | tail -15
+	@bash tests/fuzz/run.sh build-fuzz/fuzz_scene $(FUZZ_SECONDS)
 
 build-fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(LIBOBJ)
 	$(CC) $(CFLAGS) -fsanitize=fuzzer -Isrc -o $@ $< $(LIBOBJ) $(LDLIBS)

@@ -2,6 +2,7 @@
 ** grid.c - allocation and per-step reset of the background grid, and the
 ** sparse per-field slots of shared nodes.
 */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "grid.h"
@@ -16,7 +17,10 @@ double grid_bytes(const double lo[DIM], const double hi[DIM], double h,
                   int pad) {
   double nodes = 1;
   int d;
-  for (d = 0; d < DIM; d++) nodes *= nodes_along(lo, hi, h, d, 0, pad);
+  /* in doubles: this is what refuses a grid whose counts would not fit
+  ** an int (a 1e308 domain, a 1e-300 cell), before nodes_along casts */
+  for (d = 0; d < DIM; d++)
+    nodes *= floor((hi[d] - lo[d]) / h + 0.5) + 1 + 2 * pad;
   /* m, p, f, q per dimension, owner, head */
   return nodes * (8.0 * (1 + 3 * DIM) + 8.0);
 }

@@ -3,6 +3,7 @@
 ** methods.  The table is checked field by field; errors name the scene
 ** line, the field and its allowed range.
 */
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -237,6 +238,8 @@ int lsim_new(lua_State *L) {
   }
   lua_pop(L, 1);
   h = chk_num(L, 1, what, "cell", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  if (h < DBL_MIN) /* a denormal: 1 / h, the grid's scale, overflows */
+    chk_error(L, "sim: field 'cell' must be >= %g (got %g)", DBL_MIN, h);
   nodes = 1;
   for (d = 0; d < DIM; d++) {
     double c = (hi[d] - lo[d]) / h;

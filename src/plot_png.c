@@ -20,7 +20,7 @@ static int usable(double x, double y, int xlog, int ylog) {
 /* position along an axis as a fraction of its length */
 static double frac(double v, double lo, double hi, int log) {
   if (log) return (log10(v) - log10(lo)) / (log10(hi) - log10(lo));
-  return (v - lo) / (hi - lo);
+  return axis_frac(v, lo, hi);
 }
 
 void plot_map(const plot_layout *L, const plot_opts *o, double x, double y,
@@ -130,13 +130,15 @@ int plot_draw(canvas *c, plot_layout *lay, const plot_series *s, int ns,
              PLOT_MINH, PNG_MAXDIM);
     return -1;
   }
-  if (o->has_xrange && !(o->xrange[1] > o->xrange[0] && (!o->xlog || o->xrange[0] > 0))) {
-    snprintf(err, errlen, "xrange {%g, %g} must have hi > lo%s", o->xrange[0],
+  if (o->has_xrange && !(o->xrange[1] > o->xrange[0] && isfinite(o->xrange[0]) &&
+                          isfinite(o->xrange[1]) && (!o->xlog || o->xrange[0] > 0))) {
+    snprintf(err, errlen, "xrange {%g, %g} must be finite with hi > lo%s", o->xrange[0],
              o->xrange[1], o->xlog ? " > 0 (log axis)" : "");
     return -1;
   }
-  if (o->has_yrange && !(o->yrange[1] > o->yrange[0] && (!o->ylog || o->yrange[0] > 0))) {
-    snprintf(err, errlen, "yrange {%g, %g} must have hi > lo%s", o->yrange[0],
+  if (o->has_yrange && !(o->yrange[1] > o->yrange[0] && isfinite(o->yrange[0]) &&
+                          isfinite(o->yrange[1]) && (!o->ylog || o->yrange[0] > 0))) {
+    snprintf(err, errlen, "yrange {%g, %g} must be finite with hi > lo%s", o->yrange[0],
              o->yrange[1], o->ylog ? " > 0 (log axis)" : "");
     return -1;
   }

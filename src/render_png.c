@@ -138,11 +138,7 @@ static void crange(const render_opts *o, const double *v, size_t n,
     a = -m;
     b = m;
   }
-  if (!(b > a)) { /* constant: a range around it */
-    double m = a != 0 ? 0.1 * fabs(a) : 1;
-    a -= m;
-    b += m;
-  }
+  if (!(b > a)) axis_widen(&a, &b); /* constant: a range around it */
   *lo = a;
   *hi = b;
 }
@@ -227,8 +223,9 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
              PNG_MAXDIM, o->width);
     return -1;
   }
-  if (o->has_range && !(o->range[1] > o->range[0])) {
-    snprintf(err, errlen, "range {%g, %g} must have hi > lo", o->range[0],
+  if (o->has_range && !(o->range[1] > o->range[0] && isfinite(o->range[0]) &&
+                        isfinite(o->range[1]))) {
+    snprintf(err, errlen, "range {%g, %g} must be finite with hi > lo", o->range[0],
              o->range[1]);
     return -1;
   }
@@ -283,7 +280,16 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
     return -1;
   }
   L.sc = dw / lx;
-  dh = (int)floor(ly * L.sc + 0.5);
+  /* checked before it becomes an int (the image's limit below says
+  ** the same); by the aspect, as dw / lx overflows for a tiny window */
+  if (!(ly / lx * dw <= PNG_MAXDIM)) {
+    free(v);
+    snprintf(err, errlen, "the domain is %g times as high as wide: the image "
+             "would be more than %d pixels high; use a smaller width",
+             ly / lx, PNG_MAXDIM);
+    return -1;
+  }
+  dh = (int)floor(ly / lx * dw + 0.5);
   if (dh < 1) dh = 1;
   L.scale = s;
   L.w = o->width;
@@ -319,7 +325,7 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
     uint32_t col;
     if (kind == RENDER_BODY) col = cmap_category((int)v[i]);
     else if (isnan(v[i])) col = CMAP_NAN;
-    else col = cmap_color(L.cmap, (v[i] - L.vlo) / (L.vhi - L.vlo));
+    else col = cmap_color(L.cmap, axis_frac(v[i], L.vlo, L.vhi));
     particle(c, &L, ps, i, o, col);
   }
   canvas_noclip(c);
@@ -338,7 +344,7 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
     canvas_text(c, L.bx0, top, o->by ? o->by : "body", s, INK, CV_LEFT,
                 CV_TOP, 0);
     for (k = 0; k < nt; k++) {
-      double f = (ticks[k] - L.vlo) / (L.vhi - L.vlo);
+      double f = axis_frac(ticks[k], L.vlo, L.vhi);
       int ty = L.by1 - 1 - (int)floor(f * (bh - 1) + 0.5);
       canvas_rect(c, L.bx1 + 1, ty - s / 2, L.bx1 + 1 + 3 * s, ty - s / 2 + s, INK);
       canvas_text(c, L.bx1 + 1 + 6 * s, ty, lab[k], s, INK, CV_LEFT,

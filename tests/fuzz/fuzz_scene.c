@@ -8,7 +8,9 @@
 ** sanitizer reports and leaks are what it looks for; Lua errors are the
 ** expected outcome of most inputs.
 **
-**   make fuzz            (clang libFuzzer, seeded with the scenes)
+**   make fuzz            (clang libFuzzer, seeded with the scenes and
+**                         tests/fuzz/seeds; tests/fuzz/run.sh)
+**   build-fuzz/fuzz_scene FILE   one input again (a reproducer)
 */
 #define _DEFAULT_SOURCE
 #include <signal.h>
@@ -59,7 +61,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   luaL_openlibs(L);
   luaL_requiref(L, "mvmpm", luaopen_mvmpm, 1);
   lua_pop(L, 1);
-  sandbox_open(L, "build/fuzz-out");
+  sandbox_open(L, "build-fuzz/out");
   interrupt_clear();
   deadline = now() + 0.5;
   lua_sethook(L, hook, LUA_MASKCOUNT, 1000);

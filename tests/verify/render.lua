@@ -98,5 +98,32 @@ V.holds("unknown style lists the styles", e:find("line, points, both"), 0, e)
 e = err_of(mvmpm.plot, {file = tmp("q.png")})
 V.holds("series are required", e:find("'series' is required"), 0, e)
 
+V.case "mvmpm.plot and sim:render at the edges of the doubles (make test SAN=1 checks the casts)"
+local huge = {
+  {name = "denormals", x = {1, 2, 3}, y = {1e-310, 2e-310, 3e-310}},
+  {name = "one denormal apart", x = {0, 5e-324}, y = {0, 5e-324}},
+  {name = "+-1.7e308 (hi - lo overflows)", x = {-1.7e308, 1.7e308}, y = {1.7e308, -1.7e308}},
+  {name = "the largest double, constant", x = {1.79e308, 1.79e308}, y = {-1.79e308, -1.79e308}},
+  {name = "NaN and infinities among 1e308", x = {1, 2, 3, 4}, y = {0 / 0, math.huge, -math.huge, 1e308}},
+  {name = "log axes from 5e-324 to 1.7e308", x = {1e-323, 1e308}, y = {5e-324, 1.7e308}, log = true},
+  {name = "a fixed range of +-1e308", x = {1, 2}, y = {1, 2}, xrange = {-1e308, 1e308}},
+  {name = "a fixed range one ulp wide", x = {1, 2}, y = {1, 2}, yrange = {1, 1 + 2.3e-16}},
+}
+for _, c in ipairs(huge) do
+  p = tmp("huge.png")
+  local ok, err = pcall(mvmpm.plot, {file = p, width = 300, height = 200, xlog = c.log, ylog = c.log,
+    xrange = c.xrange, yrange = c.yrange, series = {{x = c.x, y = c.y, style = "both"}}})
+  w, h = png_size(p)
+  V.holds("plot of " .. c.name, ok and w == 300 and h == 200, 0, err)
+end
+local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.25}
+s:body {shape = mvmpm.rect {lo = {0, 0}, hi = {0.5, 0.5}}, material = mvmpm.elastic {K = 1, G = 1, density = 1}}
+for _, r in ipairs {{-1.7e308, 1.7e308}, {0, 5e-324}, {1e-310, 2e-310}, {1e308, 1.7e308}} do
+  p = tmp("huge.png")
+  local ok, err = pcall(s.render, s, {file = p, by = "mass", range = r, width = 300})
+  w = png_size(p)
+  V.holds(string.format("render with the colour range {%g, %g}", r[1], r[2]), ok and w == 300, 0, err)
+end
+
 os.remove(base)
 for _, f in ipairs(made) do os.remove(f) end

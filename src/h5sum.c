@@ -36,12 +36,14 @@ void h5sum_seal(unsigned char *img, size_t size) {
     block(img, img + H5SUM_BLOCK, size - H5SUM_BLOCK);
 }
 
-/* the whole file; 0 or -1 with errno */
+/* the whole file; 0 or -1 with errno.  O_NONBLOCK: a FIFO under a
+** checkpoint's name would block in open() (with no writer) before fstat
+** could refuse it; on a regular file it changes nothing */
 static int slurp(const char *path, void **img, size_t *size) {
   struct stat st;
   unsigned char *b;
   size_t n = 0;
-  int fd = open(path, O_RDONLY | O_CLOEXEC), en;
+  int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK), en;
   if (fd < 0) return -1;
   if (fstat(fd, &st) != 0) goto bad;
   if (!S_ISREG(st.st_mode)) { errno = EINVAL; goto bad; }
@@ -76,7 +78,8 @@ int h5sum_load(const char *path, void **img, size_t *size, char *err,
   *img = NULL;
   *size = 0;
   if (slurp(path, (void **)&b, &n)) {
-    snprintf(err, errlen, "%s: cannot read file (%s)", path, strerror(errno));
+    snprintf(err, errlen, "%s: cannot read file (%s)", path,
+             errno == EINVAL ? "not a regular file" : strerror(errno));
     return -1;
   }
   if (n >= sizeof hdf5sig && memcmp(b, hdf5sig, sizeof hdf5sig) == 0) {

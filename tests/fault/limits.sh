@@ -142,6 +142,10 @@ refused "  says why" "not a regular file"
 run run --restart f.h5 --quiet; rc=$?
 [ $rc -eq 1 ]; ok $? "a FIFO as the checkpoint: refused, no hang" "$(st $rc)"
 refused "  says why" "not a regular file"
+mkdir d && mkfifo d/checkpoint_000001.h5
+run run --restart d --quiet; rc=$?
+[ $rc -eq 1 ]; ok $? "a FIFO as the newest checkpoint of a directory: refused, no hang" "$(st $rc)"
+refused "  says why" "not a regular file"
 run test f.lua; rc=$?
 [ $rc -eq 1 ]; ok $? "a FIFO as a verification script: refused, no hang" "$(st $rc)"
 finish

@@ -20,13 +20,13 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=0:detect_leaks=1}
   "$dir/corpus" >"$log" 2>&1
 rc=$?
 if [ $rc -eq 0 ]; then
-  grep -E '^(#[0-9]+ +DONE|Done [0-9]+ runs|stat::)' "$log" | tail -12
+  grep -aE '^#[0-9]+[[:space:]]+DONE|^Done [0-9]+ runs|^stat::' "$log" | tail -12
   exit 0
 fi
 echo "fuzz: a finding (exit $rc); the full output is $log"
 # from the first report to the end, where libFuzzer names the reproducer
-first=$(grep -nE '^==[0-9]+==(ERROR|WARNING)|runtime error:|^==[0-9]+== ERROR: libFuzzer' "$log" | head -1 | cut -d: -f1)
+first=$(grep -naE '^==[0-9]+==(ERROR|WARNING)|runtime error:|^==[0-9]+== ERROR: libFuzzer' "$log" | head -1 | cut -d: -f1)
 if [ -n "$first" ]; then sed -n "$first,\$p" "$log"; else tail -60 "$log"; fi
-art=$(grep -oE "Test unit written to [^ ]+" "$log" | tail -1 | sed 's/Test unit written to //')
+art=$(grep -aoE "Test unit written to [^ ]+" "$log" | tail -1 | sed 's/Test unit written to //')
 [ -n "$art" ] && echo "fuzz: reproducer $art (run: $fuzzer $art)"
 exit 1

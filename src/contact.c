@@ -47,36 +47,76 @@
 ** work, the friction work, and the bonds cut (a count) */
 #define CREC (DIM + 3)
 
-/* normals of the shared nodes [k0, k1): each node reads and writes only
-** its own slots, so parts cut anywhere give the same numbers */
-static void normals(grid *g, size_t k0, size_t k1) {
+/* |a_sl|, and in u the sum of a over the other slots at node n */
+static double parts(const grid *g, double *const a[DIM], int32_t n,
+                    int32_t sl, double u[DIM], double *rest) {
+  double own = 0, r = 0;
+  int32_t q;
+  int d;
+  for (d = 0; d < DIM; d++) u[d] = 0;
+  for (q = g->head[n]; q >= 0; q = g->snext[q])
+    if (q != sl)
+      for (d = 0; d < DIM; d++) u[d] += a[d][q];
+  for (d = 0; d < DIM; d++) {
+    own += a[d][sl] * a[d][sl];
+    r += u[d] * u[d];
+  }
+  *rest = sqrt(r);
+  return sqrt(own);
+}
+
+/* Normals of the shared nodes [k0, k1): each node reads and writes only
+** its own slots, so parts cut anywhere give the same numbers.
+**   "mass", "volume": field r against the rest, (2 a_r - A) / |.| from
+**     its mass or volume gradient a_r (A their sum over the fields).
+**   "maxvolume": the side with the larger volume gradient is the better
+**     sampled surface (the other reaches the node with a sliver of
+**     material, or from a stair-step's corner): its own direction is
+**     the normal, and the partner takes the opposite one.  With more
+**     fields, field r against the rest: r's own direction where
+**     |a_r| > |rest|, minus the rest's where it is smaller, and the
+**     difference on an exact tie; so with two fields n_B = -n_A. */
+static void normals(sim *s, size_t k0, size_t k1) {
+  grid *g = &s->g;
+  double *const *a = s->normals == NORMALS_MASS ? g->sg : g->sv;
+  const int maxv = s->normals == NORMALS_MAXVOLUME;
   size_t k;
   for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl;
     double G[DIM] = {0};
     int d;
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
-      for (d = 0; d < DIM; d++) G[d] += g->sg[d][sl];
+      for (d = 0; d < DIM; d++) G[d] += a[d][sl];
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       double v[DIM], len = 0;
       for (d = 0; d < DIM; d++) {
-        v[d] = 2.0 * g->sg[d][sl] - G[d];
+        v[d] = 2.0 * a[d][sl] - G[d];
         len += v[d] * v[d];
       }
       len = sqrt(len);
+      if (maxv) {
+        double u[DIM], rest, own = parts(g, a, n, sl, u, &rest);
+        if (own > rest) {
+          for (d = 0; d < DIM; d++) v[d] = a[d][sl];
+          len = own;
+        } else if (rest > own) {
+          for (d = 0; d < DIM; d++) v[d] = -u[d];
+          len = rest;
+        }
+      }
       for (d = 0; d < DIM; d++) g->sn[d][sl] = len > 0 ? v[d] / len : 0.0;
     }
   }
 }
 
 static void normals_part(void *arg, int t, int nparts) {
-  grid *g = arg;
+  sim *s = arg;
   size_t k0, k1;
-  par_range(g->nshared, t, nparts, &k0, &k1);
-  normals(g, k0, k1);
+  par_range(s->g.nshared, t, nparts, &k0, &k1);
+  normals(s, k0, k1);
 }
 
-void contact_normals(sim *s) { par_run(s->par, normals_part, &s->g); }
+void contact_normals(sim *s) { par_run(s->par, normals_part, s); }
 
 /*
 ** The normal traction the bond carries at node n for field r (tension

@@ -137,7 +137,8 @@ int lsim_new(lua_State *L) {
   static const char *const transfers[] = {"flip", "apic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
-  static const char *const normalsopt[] = {"mass", "volume", "maxvolume", NULL};
+  static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
+                                             "plane", NULL};
   const char *what = "sim";
   double lo[DIM], hi[DIM], h, nodes, bytes;
   int periodic[NSIDES] = {0}, pdim[DIM], shape, ppc, k, d, sidx;

@@ -7,7 +7,8 @@
 ** the contact normals come from: the mass gradient sum_p m_p grad S_ip
 ** (sg), or with sim.normals "volume" or "maxvolume" the volume gradient
 ** sum_p V_p grad S_ip (sv, which bonds then need not gather again).  One
-** of the two, so a scene pays for the one it uses.
+** of the two, so a scene pays for the one it uses; "plane" also gathers
+** the particles' moments about the node (grid.h).
 */
 #include "sim.h"
 #include "bands.h"
@@ -32,6 +33,7 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
   const int byvol = s->normals != NORMALS_MASS;
   double *const *sgrad = byvol ? g->sv : g->sg;
+  const int plane = shared && s->normals == NORMALS_PLANE;
   const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
   double r[DIM][STENCIL_MAX];
   unsigned char mine[SHAPE_MAXW];
@@ -56,7 +58,7 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     if (split &&
         !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
       continue;
-    if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
+    if (apic || plane) stencil_eval_r(&geo, kind, x, lp, &st, r);
     else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
@@ -83,6 +85,16 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
         g->sf[1][sl] += fy;
         sgrad[0][sl] += wg * dx;
         sgrad[1][sl] += wg * dy;
+        if (plane) { /* moments of r / h, weighted w V */
+          double wv = w * V, u[DIM];
+          int a, b;
+          for (a = 0; a < DIM; a++) u[a] = r[a][k] * g->inv_h;
+          g->sw[sl] += wv;
+          for (a = 0; a < DIM; a++) {
+            g->sx[a][sl] += wv * u[a];
+            for (b = a; b < DIM; b++) g->sxx[grid_sym(a, b)][sl] += wv * u[a] * u[b];
+          }
+        }
       }
     }
   }

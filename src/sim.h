@@ -27,10 +27,11 @@ enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC };
-/* the gradient contact normals come from (contact.c): each field's mass
-** or volume gradient against the others', or the larger volume
-** gradient's direction for both sides */
-enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME };
+/* how contact normals are taken (contact.c): each field's mass or volume
+** gradient against the others', the larger volume gradient's direction
+** for both sides, or the least-squares plane between the particles */
+enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
+                    NORMALS_PLANE };
 #define NSIDES (2 * DIM)
 /* side index: 2 d for the low side of dimension d, 2 d + 1 for the high */
 

@@ -12,7 +12,12 @@
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
-local methods = {"mass", "volume", "maxvolume"}
+local methods = {"mass", "volume", "maxvolume", "plane"}
+-- the block and its slope have one density, so their volume gradients
+-- are their mass gradients scaled, but for the particles' small volume
+-- changes: "volume" is left out of the block's runs (measured: within
+-- 0.5 % of "mass" in every figure)
+local solid = {"mass", "maxvolume", "plane"}
 local TH = math.rad(30)
 
 -- least-squares slope of v(t)
@@ -131,13 +136,13 @@ end
 
 for _, mu in ipairs {0, 0.2} do
   V.case(string.format("block on a grid-aligned flat body, gravity rotated 30 degrees, mu = %g", mu))
-  local r = sweep(K, function(k, m) return block(k, m, mu, false) end)
+  local r = sweep(K, function(k, m) return block(k, m, mu, false) end, solid)
   print("     |a / (g (sin - mu cos)) - 1|, cells per block side 4 8 16:")
-  for _, m in ipairs(methods) do row(m, K, col(r, m, 1, err)) end
+  for _, m in ipairs(solid) do row(m, K, col(r, m, 1, err)) end
   print("     largest spin (rad/time):")
-  for _, m in ipairs(methods) do row(m, K, col(r, m, 2)) end
+  for _, m in ipairs(solid) do row(m, K, col(r, m, 2)) end
   print("     largest speed across the slope / speed along it:")
-  for _, m in ipairs(methods) do row(m, K, col(r, m, 3)) end
+  for _, m in ipairs(solid) do row(m, K, col(r, m, 3)) end
   local mv = r.maxvolume
   V.holds("maxvolume: acceleration error below mass's at 4, 8, 16",
           no_worse(r, "maxvolume", 1, err), err(mv[2][1]))
@@ -160,10 +165,12 @@ end
 -- slope normal at every shared node instead, the same scene slides at
 -- a / (g sin theta) = 1.0000 (4 and 8 cells): the normals alone are at
 -- fault here.
-for _, mu in ipairs {0, 0.2} do
-  V.case(string.format("block on a flat body rotated 30 degrees to the grid, mu = %g (reported)", mu))
-  -- (volume: as mass within a few per cent here, left out for time)
-  local mm = {"mass", "maxvolume"}
+-- (With friction mu = 0.2 no method slides either: a / (g (sin - mu
+-- cos)) between -0.14 and 0.01; left out for time.)
+do
+  local mu = 0
+  V.case("block on a flat body rotated 30 degrees to the grid, mu = 0 (reported)")
+  local mm = solid
   local r = sweep(K, function(k, m) return block(k, m, mu, true) end, mm)
   print("     |a / (g (sin - mu cos)) - 1|, cells per block side 4 8 16:")
   for _, m in ipairs(mm) do row(m, K, col(r, m, 1, err)) end
@@ -182,14 +189,39 @@ print("     largest spin (rad/time; none wanted):")
 for _, m in ipairs(methods) do row(m, CELLS, col(r, m, 2)) end
 print("     1 - total energy kept (kinetic + strain):")
 for _, m in ipairs(methods) do row(m, CELLS, col(r, m, 3, err)) end
--- Known gap: no method keeps the tangential velocity within 2 % (best
--- about 11 %), and none converges from 40 to 80 cells.  With the exact
+-- Known gap: no method keeps the tangential velocity within 2 % (best,
+-- "plane", loses 10-12 %), and none converges from 40 to 80 cells.  With the exact
 -- line-of-centres normal at every node it keeps 94-95 %: half the loss
 -- is the normals', the rest the contact rule's.
 V.holds("volume: keeps at least mass's tangential velocity at 20, 40, 80",
         no_worse(r, "volume", 1, err), r.volume[2][1])
 V.holds("volume: spins the discs no more than mass at 20, 40, 80",
         no_worse(r, "volume", 2, function(x) return x end), r.volume[2][2])
+V.holds("plane: keeps at least mass's tangential velocity at 20, 40, 80",
+        no_worse(r, "plane", 1, err), r.plane[2][1])
+V.holds("plane: spins the discs no more than mass at 20, 40, 80",
+        no_worse(r, "plane", 2, function(x) return x end), r.plane[2][2])
+V.holds("plane: keeps at least mass's energy at 20, 40, 80",
+        no_worse(r, "plane", 3, err), r.plane[2][3])
 for _, m in ipairs(methods) do
   V.info(m .. ": tangential velocity kept at 40 cells (0.98 wanted)", r[m][2][1])
+end
+
+V.case "the new normals give the same numbers at any thread count"
+for _, meth in ipairs {"volume", "maxvolume", "plane"} do
+  local out = {}
+  for _, th in ipairs {1, 2} do
+    local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 60, ppc = 2,
+      sides = "free", t_end = 1.8, normals = meth, threads = th}
+    local m = mvmpm.elastic {E = 1000, nu = 0.3, density = 1000}
+    local o = 0.2 / math.sqrt(2)
+    local a = sim:body {material = m, velocity = {0.1, 0.1},
+      shape = mvmpm.disk {center = {0.2, 0.2}, radius = 0.2}}
+    sim:body {material = m, velocity = {-0.1, -0.1},
+      shape = mvmpm.disk {center = {0.8 + o, 0.8 - o}, radius = 0.2}}
+    sim:run()
+    local d = a:diag()
+    out[th] = string.format("%.17g %.17g %.17g", d.x, d.vy, d.omega)
+  end
+  V.holds(meth .. ": 1 and 2 threads, the same bits", out[1] == out[2], 0)
 end

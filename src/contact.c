@@ -7,7 +7,8 @@
 ** G = sum_r g_r, the outward unit normal of body r is
 **   n_r = (2 g_r - G) / |2 g_r - G|
 ** With two fields this is (g_A - g_B)/|.|, so n_B = -n_A exactly: both
-** sides see one interface.
+** sides see one interface.  That is sim.normals = "mass", the default;
+** normals() below gives the others ("volume", "maxvolume", "plane").
 **
 ** The rule (after the grid momentum update, on q = p + dt f):
 **   v_cm = sum q_r / sum m_r (a driven body's velocity replaces it)

@@ -225,3 +225,12 @@ for _, meth in ipairs {"volume", "maxvolume", "plane"} do
   end
   V.holds(meth .. ": 1 and 2 threads, the same bits", out[1] == out[2], 0)
 end
+
+V.case "a normals setting not known is refused, naming the choices"
+do
+  local ok, msg = pcall(mvmpm.sim, {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1,
+                                    normals = "volumes"})
+  V.holds("normals = \"volumes\": an error naming mass, volume, maxvolume, plane",
+          not ok and tostring(msg):find("mass, volume, maxvolume, plane", 1, true) ~= nil, 0,
+          tostring(msg))
+end

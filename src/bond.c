@@ -69,6 +69,9 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   const body *bd = s->bodies;
   const double *bp = particles_comp(ps, s->fbond, 0);
   const int nw = shape_width(s->shape);
+  /* the normals took the volume gradient in p2g already (the same sums
+  ** in the same order) */
+  const int byvol = s->normals != NORMALS_MASS;
   unsigned char mine[SHAPE_MAXW];
   stencil st;
   size_t i, k;
@@ -94,7 +97,8 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
       if (g->head[n] < 0 || (blk >= 0 && !mine[k / nw])) continue;
       sl = grid_slot(g, n, f);
       g->sb[sl] += st.w[k] * mp * bp[i];
-      for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
+      if (!byvol)
+        for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
     }
     own = nearest(g, x);
     if (blk >= 0) {

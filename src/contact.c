@@ -7,7 +7,8 @@
 ** G = sum_r g_r, the outward unit normal of body r is
 **   n_r = (2 g_r - G) / |2 g_r - G|
 ** With two fields this is (g_A - g_B)/|.|, so n_B = -n_A exactly: both
-** sides see one interface.
+** sides see one interface.  That is sim.normals = "mass", the default;
+** normals() below gives the others ("volume", "maxvolume", "plane").
 **
 ** The rule (after the grid momentum update, on q = p + dt f):
 **   v_cm = sum q_r / sum m_r (a driven body's velocity replaces it)
@@ -47,36 +48,147 @@
 ** work, the friction work, and the bonds cut (a count) */
 #define CREC (DIM + 3)
 
-/* normals of the shared nodes [k0, k1): each node reads and writes only
-** its own slots, so parts cut anywhere give the same numbers */
-static void normals(grid *g, size_t k0, size_t k1) {
+/* |a_sl|, and in u the sum of a over the other slots at node n */
+static double parts(const grid *g, double *const a[DIM], int32_t n,
+                    int32_t sl, double u[DIM], double *rest) {
+  double own = 0, r = 0;
+  int32_t q;
+  int d;
+  for (d = 0; d < DIM; d++) u[d] = 0;
+  for (q = g->head[n]; q >= 0; q = g->snext[q])
+    if (q != sl)
+      for (d = 0; d < DIM; d++) u[d] += a[d][q];
+  for (d = 0; d < DIM; d++) {
+    own += a[d][sl] * a[d][sl];
+    r += u[d] * u[d];
+  }
+  *rest = sqrt(r);
+  return sqrt(own);
+}
+
+/*
+** "plane": the plane that best separates field r's particles near the
+** node from the others', by least squares.  With u_p = (x_i - x_p)/h and
+** c_p = 1 for r's particles, -1 for the others', (n, b) minimize
+**   sum_p w_p (n . u_p + b - c_p)^2,   w_p = V_p S_ip
+** (a linear discriminant: it sees where each side's material lies, not
+** how steeply its mass falls off, so a body's corner facing a flat face
+** does not turn the face's normal).  The normal equations need only the
+** moments p2g gathered:
+**   [ sum w u u^T  sum w u ] [n]   [ sum c w u ]
+**   [ sum w u^T    sum w   ] [b] = [ sum c w   ]
+** and n, pointing to where c grows away from r's material, is r's
+** outward normal.  The right side is r's moments less the others', so
+** with two fields the partner's is the exact negative, and so is its
+** normal.  Gaussian elimination with partial pivoting; 0 if singular
+** (the particles all on one line through the node, say).
+*/
+#define NP (DIM + 1)
+static int plane(const grid *g, int32_t n, int32_t sl, double v[DIM]) {
+  double A[NP][NP] = {{0}}, y[NP] = {0};
+  int32_t q;
+  int a, b, c;
+  for (q = g->head[n]; q >= 0; q = g->snext[q]) {
+    double sgn = q == sl ? 1.0 : -1.0;
+    for (a = 0; a < DIM; a++) {
+      for (b = a; b < DIM; b++) A[a][b] += g->sxx[grid_sym(a, b)][q];
+      A[a][DIM] += g->sx[a][q];
+      y[a] += sgn * g->sx[a][q];
+    }
+    A[DIM][DIM] += g->sw[q];
+    y[DIM] += sgn * g->sw[q];
+  }
+  for (a = 0; a < NP; a++)
+    for (b = 0; b < a; b++) A[a][b] = A[b][a];
+  for (c = 0; c < NP; c++) {
+    int p = c;
+    double t;
+    for (a = c + 1; a < NP; a++)
+      if (fabs(A[a][c]) > fabs(A[p][c])) p = a;
+    if (!(fabs(A[p][c]) > 1e-12 * A[DIM][DIM])) return 0;
+    if (p != c) {
+      for (b = 0; b < NP; b++) { t = A[c][b]; A[c][b] = A[p][b]; A[p][b] = t; }
+      t = y[c]; y[c] = y[p]; y[p] = t;
+    }
+    for (a = c + 1; a < NP; a++) {
+      double f = A[a][c] / A[c][c];
+      for (b = c; b < NP; b++) A[a][b] -= f * A[c][b];
+      y[a] -= f * y[c];
+    }
+  }
+  for (c = NP - 1; c >= 0; c--) {
+    for (b = c + 1; b < NP; b++) y[c] -= A[c][b] * y[b];
+    y[c] /= A[c][c];
+  }
+  for (a = 0; a < DIM; a++) v[a] = y[a];
+  return 1;
+}
+#undef NP
+
+/* Normals of the shared nodes [k0, k1): each node reads and writes only
+** its own slots, so parts cut anywhere give the same numbers.
+**   "mass", "volume": field r against the rest, (2 a_r - A) / |.| from
+**     its mass or volume gradient a_r (A their sum over the fields).
+**   "maxvolume": the side with the larger volume gradient is the better
+**     sampled surface (the other reaches the node with a sliver of
+**     material, or from a stair-step's corner): its own direction is
+**     the normal, and the partner takes the opposite one.  With more
+**     fields, field r against the rest: r's own direction where
+**     |a_r| > |rest|, minus the rest's where it is smaller, and the
+**     difference on an exact tie; so with two fields n_B = -n_A.
+**   "plane": plane() above, the volume gradients' difference where it
+**     has none. */
+static void normals(sim *s, size_t k0, size_t k1) {
+  grid *g = &s->g;
+  double *const *a = s->normals == NORMALS_MASS ? g->sg : g->sv;
+  const int maxv = s->normals == NORMALS_MAXVOLUME;
+  const int pl = s->normals == NORMALS_PLANE;
   size_t k;
   for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl;
     double G[DIM] = {0};
     int d;
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
-      for (d = 0; d < DIM; d++) G[d] += g->sg[d][sl];
+      for (d = 0; d < DIM; d++) G[d] += a[d][sl];
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       double v[DIM], len = 0;
       for (d = 0; d < DIM; d++) {
-        v[d] = 2.0 * g->sg[d][sl] - G[d];
+        v[d] = 2.0 * a[d][sl] - G[d];
         len += v[d] * v[d];
       }
       len = sqrt(len);
+      if (pl) {
+        double u[DIM], l2 = 0;
+        if (plane(g, n, sl, u)) {
+          for (d = 0; d < DIM; d++) l2 += u[d] * u[d];
+          if (l2 > 0) {
+            for (d = 0; d < DIM; d++) v[d] = u[d];
+            len = sqrt(l2);
+          }
+        }
+      } else if (maxv) {
+        double u[DIM], rest, own = parts(g, a, n, sl, u, &rest);
+        if (own > rest) {
+          for (d = 0; d < DIM; d++) v[d] = a[d][sl];
+          len = own;
+        } else if (rest > own) {
+          for (d = 0; d < DIM; d++) v[d] = -u[d];
+          len = rest;
+        }
+      }
       for (d = 0; d < DIM; d++) g->sn[d][sl] = len > 0 ? v[d] / len : 0.0;
     }
   }
 }
 
 static void normals_part(void *arg, int t, int nparts) {
-  grid *g = arg;
+  sim *s = arg;
   size_t k0, k1;
-  par_range(g->nshared, t, nparts, &k0, &k1);
-  normals(g, k0, k1);
+  par_range(s->g.nshared, t, nparts, &k0, &k1);
+  normals(s, k0, k1);
 }
 
-void contact_normals(sim *s) { par_run(s->par, normals_part, &s->g); }
+void contact_normals(sim *s) { par_run(s->par, normals_part, s); }
 
 /*
 ** The normal traction the bond carries at node n for field r (tension

@@ -62,6 +62,9 @@ static void slots_free(grid *g) {
   free(g->sext); free(g->sb); free(g->scut); free(g->sbonded);
   free(g->sbo); free(g->smo);
   for (d = 0; d < DIM; d++) free(g->sv[d]);
+  free(g->sw);
+  for (d = 0; d < DIM; d++) free(g->sx[d]);
+  for (d = 0; d < DIM * (DIM + 1) / 2; d++) free(g->sxx[d]);
   for (d = 0; d < DIM; d++) {
     free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
     free(g->sg[d]); free(g->sn[d]);
@@ -79,7 +82,8 @@ void grid_free(grid *g) {
 size_t grid_mem(const grid *g) {
   size_t dense = g->nnodes * ((1 + 3 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
   size_t slot = g->slotcap * (3 * sizeof(int32_t) + (2 + 5 * DIM) * sizeof(double));
-  return dense + slot + g->sharedcap * sizeof(int32_t);
+  size_t mom = g->momcap * (1 + DIM + DIM * (DIM + 1) / 2) * sizeof(double);
+  return dense + slot + mom + g->sharedcap * sizeof(int32_t);
 }
 
 void grid_clear(grid *g, size_t i0, size_t i1, int clear_q) {
@@ -135,9 +139,21 @@ static int slots_grow(grid *g) {
   return 0;
 }
 
+/* the moments' arrays, as many as the slots, only while they are used */
+static int moments_grow(grid *g) {
+  size_t cap = g->slotcap;
+  int d;
+  GROW(g->sw, double, cap);
+  for (d = 0; d < DIM; d++) GROW(g->sx[d], double, cap);
+  for (d = 0; d < DIM * (DIM + 1) / 2; d++) GROW(g->sxx[d], double, cap);
+  g->momcap = cap;
+  return 0;
+}
+
 int grid_slots_reserve(grid *g, size_t nslot, size_t nshared) {
   while (g->slotcap < nslot)
     if (slots_grow(g)) return -1;
+  if (g->moments && g->momcap < g->slotcap && moments_grow(g)) return -1;
   if (g->sharedcap < nshared) {
     size_t cap = g->sharedcap ? 2 * g->sharedcap : 1024;
     while (cap < nshared) cap *= 2;
@@ -165,5 +181,10 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
     memset(g->sq[d] + s0, 0, n);
     memset(g->sg[d] + s0, 0, n);
     memset(g->sn[d] + s0, 0, n);
+  }
+  if (g->moments) {
+    memset(g->sw + s0, 0, n);
+    for (d = 0; d < DIM; d++) memset(g->sx[d] + s0, 0, n);
+    for (d = 0; d < DIM * (DIM + 1) / 2; d++) memset(g->sxx[d] + s0, 0, n);
   }
 }

@@ -46,6 +46,13 @@ typedef struct grid {
   double *sbo, *smo;   /* strength x mass, and mass, of the particles whose
                           nearest node this is (bond.c) */
   unsigned char *sbonded; /* bonded this step: moves with the node */
+  /* the particles' moments about the node, for normals = "plane"
+  ** (contact.c), kept only while moments is set: sum_p w_p, sum_p w_p r_p
+  ** and sum_p w_p r_p r_p^T (upper triangle, row by row), w_p = V_p S_ip,
+  ** r_p = (x_i - x_p) / h */
+  int moments;
+  size_t momcap;
+  double *sw, *sx[DIM], *sxx[DIM * (DIM + 1) / 2];
   /* list of shared nodes */
   size_t nshared, sharedcap;
   int32_t *shared;
@@ -72,6 +79,10 @@ void grid_reset_slots(grid *g);
 ** Marking (mark.c) fills them: it sets nslot, nshared, the list and the
 ** links, and clears the sums with grid_slots_clear */
 int grid_slots_reserve(grid *g, size_t nslot, size_t nshared);
+/* index of (a, b), a <= b, in sxx */
+static inline int grid_sym(int a, int b) {
+  return a * DIM - a * (a - 1) / 2 + (b - a);
+}
 /* zero the sums of slots [s0, s1) (threads may clear parts at once) */
 void grid_slots_clear(grid *g, size_t s0, size_t s1);
 /* the slot of field f at a shared node (must exist) */

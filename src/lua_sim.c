@@ -207,11 +207,13 @@ int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
-      "wall_remap", NULL};
+      "wall_remap", "normals", NULL};
   static const char *const updates[] = {"usl", "musl", NULL};
   static const char *const transfers[] = {"flip", "apic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
+  static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
+                                             "plane", NULL};
   const char *what = "sim";
   double lo[DIM], hi[DIM], h, nodes, bytes;
   int periodic[NSIDES] = {0}, pdim[DIM], shape, ppc, k, d, sidx;
@@ -353,6 +355,7 @@ int lsim_new(lua_State *L) {
                                     1, PAR_MAX, CHK_INT));
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
     s->wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
+    s->normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
     lua_getfield(L, 1, "units");
     snprintf(ls->units, sizeof ls->units, "%s",
              lua_isnil(L, -1) ? "nondimensional" : luaL_checkstring(L, -1));

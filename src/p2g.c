@@ -3,8 +3,12 @@
 **   m_i = sum_p S_ip m_p            p_i = sum_p S_ip m_p v_p
 **   f_i = -sum_p V_p sigma_p . grad S_ip + sum_p S_ip m_p g
 ** Every particle adds to the centre-of-mass field (dense arrays); at
-** shared nodes it also adds to its own field's slot, with the mass
-** gradient sum_p m_p grad S_ip that gives the contact normals.
+** shared nodes it also adds to its own field's slot, with the gradient
+** the contact normals come from: the mass gradient sum_p m_p grad S_ip
+** (sg), or with sim.normals "volume" or "maxvolume" the volume gradient
+** sum_p V_p grad S_ip (sv, which bonds then need not gather again).  One
+** of the two, so a scene pays for the one it uses; "plane" also gathers
+** the particles' moments about the node (grid.h).
 */
 #include "sim.h"
 #include "bands.h"
@@ -27,6 +31,9 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   ** stores to the other arrays */
   double *restrict gm = g->m, *restrict gpx = g->p[0], *restrict gpy = g->p[1];
   double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
+  const int byvol = s->normals != NORMALS_MASS;
+  double *const *sgrad = byvol ? g->sv : g->sg;
+  const int plane = shared && s->normals == NORMALS_PLANE;
   const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
   double r[DIM][STENCIL_MAX];
   unsigned char mine[SHAPE_MAXW];
@@ -46,11 +53,12 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     double sxx = V * ps->s[S_XX][i], syy = V * ps->s[S_YY][i];
     double sxy = V * ps->s[S_XY][i];
     int32_t f = bd[ps->body[i]].field;
+    const double wg = byvol ? V : mp; /* the normals' weight */
     int k;
     if (split &&
         !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
       continue;
-    if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
+    if (apic || plane) stencil_eval_r(&geo, kind, x, lp, &st, r);
     else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
@@ -75,8 +83,18 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
         g->sp[1][sl] += wm * vy;
         g->sf[0][sl] += fx;
         g->sf[1][sl] += fy;
-        g->sg[0][sl] += mp * dx;
-        g->sg[1][sl] += mp * dy;
+        sgrad[0][sl] += wg * dx;
+        sgrad[1][sl] += wg * dy;
+        if (plane) { /* moments of r / h, weighted w V */
+          double wv = w * V, u[DIM];
+          int a, b;
+          for (a = 0; a < DIM; a++) u[a] = r[a][k] * g->inv_h;
+          g->sw[sl] += wv;
+          for (a = 0; a < DIM; a++) {
+            g->sx[a][sl] += wv * u[a];
+            for (b = a; b < DIM; b++) g->sxx[grid_sym(a, b)][sl] += wv * u[a] * u[b];
+          }
+        }
       }
     }
   }

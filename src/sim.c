@@ -432,6 +432,7 @@ int sim_step(sim *s) {
   par_run(s->par, reset_part, &s->g);
   grid_reset_slots(&s->g);
   p2g_plan(s);
+  s->g.moments = s->normals == NORMALS_PLANE;
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;

@@ -27,6 +27,11 @@ enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC };
+/* how contact normals are taken (contact.c): each field's mass or volume
+** gradient against the others', the larger volume gradient's direction
+** for both sides, or the least-squares plane between the particles */
+enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
+                    NORMALS_PLANE };
 #define NSIDES (2 * DIM)
 /* side index: 2 d for the low side of dimension d, 2 d + 1 for the high */
 
@@ -108,6 +113,7 @@ typedef struct sim {
                         2-D), each interface counted once */
   int gap_check;     /* contact only once material surfaces meet */
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
+  int normals;       /* enum normals_kind: how contact normals are taken */
   double mcut;       /* nodal masses below this are empty */
   int sort_every;    /* steps between sorts by cell */
   size_t nremoved;   /* particles that left the domain */

@@ -1,0 +1,77 @@
+-- Study: a disc on an incline, the incline being the floor wall of a box
+-- with gravity rotated by theta (g = 1), periodic along the incline.  An
+-- elastic disc (K = 100, G = 50, density 1, R = 0.5: sqrt(g R) / c_L =
+-- 0.05) starts at rest touching the floor.  Two regimes:
+--
+--   roll:  theta = 25 deg, mu = 0.5 >= tan(theta) / 3: rolling without
+--          slip, a = (2/3) g sin(theta), alpha = a / R
+--   slide: theta = 30 deg, mu = 0.1 <  tan(theta) / 3: sliding,
+--          a = g (sin(theta) - mu cos(theta)), R alpha = 2 mu g cos(theta)
+--
+-- Measured: least-squares slopes of the centroid velocity along the
+-- incline and of the spin (sim diag omega, clockwise = down the incline)
+-- over t = 0.5 .. 2 (40 samples; the first quarter is the settling).
+-- Errors: |a / a_ref - 1| and |alpha / alpha_ref - 1| per regime.
+--
+--   ./mvmpm test studies/roll.lua          (STUDY_QUICK=1: fewer settings)
+local mvmpm = require "mvmpm"
+local S = require "mvmpm.study"
+
+local g, R, T = 1, 0.5, 2
+
+-- one regime at settings s: slopes of v and omega after the settling
+local function incline(s, clock, deg, mu)
+  local th = math.rad(deg)
+  local sim = mvmpm.sim {
+    domain = {x = {0, 4}, y = {0, 1.5}}, cell = 1 / s.cells, ppc = s.ppc,
+    shape = s.shape, transfer = s.transfer, flip = s.flip, update = s.update,
+    cfl = s.cfl, t_end = T, gravity = {g * math.sin(th), -g * math.cos(th)},
+    sides = {left = "periodic", right = "periodic",
+             bottom = {"wall", friction = mu}, top = "wall"},
+  }
+  local disc = sim:body {shape = mvmpm.disk {center = {1, R}, radius = R},
+                         material = mvmpm.elastic {K = 100, G = 50, density = 1}}
+  local n, ts, vs, ws, hop = 40, {}, {}, {}, 0
+  for k = 1, n do
+    clock.run(sim, T * k / n)
+    local d = disc:diag()
+    ts[k], vs[k], ws[k] = sim.t, d.vx, -d.omega
+    hop = math.max(hop, d.y - R)
+  end
+  local function slope(y)
+    local sx, sy, sxx, sxy, c = 0, 0, 0, 0, 0
+    for i = n // 4, n do
+      sx, sy, sxx, sxy, c = sx + ts[i], sy + y[i], sxx + ts[i] ^ 2, sxy + ts[i] * y[i], c + 1
+    end
+    return (c * sxy - sx * sy) / (c * sxx - sx * sx)
+  end
+  return slope(vs), slope(ws), hop, th
+end
+
+local case = {
+  name = "roll",
+  title = "disc on an incline: rolling (25 deg, mu 0.5) and sliding (30 deg, mu 0.1)",
+  length = "D",
+  reference = "rigid disc: rolling a = 2/3 g sin, alpha = a/R; sliding a = g (sin - mu cos), R alpha = 2 mu g cos",
+  metrics = {{key = "roll_a", label = "rolling |a/a_ref - 1|"},
+             {key = "roll_alpha", label = "rolling |alpha/alpha_ref - 1|"},
+             {key = "slide_a", label = "sliding |a/a_ref - 1|"},
+             {key = "slide_alpha", label = "sliding |alpha/alpha_ref - 1|"}},
+  extra = {"roll_a_ratio", "roll_alpha_ratio", "slide_a_ratio", "slide_alpha_ratio", "roll_hop"},
+  grid = {cells = {8, 16, 32}, shape = {"linear", "gimp", "bspline2"},
+          transfer = {"flip", "apic"}, ppc = {2, 4}},
+  baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl", ppc = 2},
+  skip = function(s) return s.transfer == "apic" and s.shape == "linear" end,
+  run = function(s, clock)
+    local ra, ral, hop, th = incline(s, clock, 25, 0.5)
+    local a_r = 2 / 3 * g * math.sin(th)
+    local sa, sal, _, ts = incline(s, clock, 30, 0.1)
+    local a_s = g * (math.sin(ts) - 0.1 * math.cos(ts))
+    local al_s = 2 * 0.1 * g * math.cos(ts) / R
+    return {roll_a = math.abs(ra / a_r - 1), roll_alpha = math.abs(ral / (a_r / R) - 1),
+            slide_a = math.abs(sa / a_s - 1), slide_alpha = math.abs(sal / al_s - 1),
+            roll_a_ratio = ra / a_r, roll_alpha_ratio = ral / (a_r / R),
+            slide_a_ratio = sa / a_s, slide_alpha_ratio = sal / al_s, roll_hop = hop}
+  end,
+}
+return S.main(case)

@@ -62,14 +62,21 @@ typedef struct lbody {
   int idx;
 } lbody;
 
-/* what a run may need before it is refused as one that would not end */
-#define LSIM_MAX_STEPS 1e12   /* steps to t_end */
+/* What a run may need before it is refused as one that would not end.
+** A run to an end time (mvmpm run, sim:run) may take LSIM_MAX_STEPS
+** steps.  A value as it enters (a material, a velocity, a fixed dt) is
+** held to LSIM_MAX_SPAN: a scene may set a t_end it never means to reach
+** and step by hand (sim:step), so the entry check refuses only a step so
+** small against t_end that time itself stops advancing in doubles (near
+** 2^52 steps t + dt rounds to t); the run's own check comes when it runs */
+#define LSIM_MAX_STEPS 1e12   /* steps of a run to its end */
+#define LSIM_MAX_SPAN 1e15    /* steps across t_end, where a value enters */
 #define LSIM_MAX_EVENTS 1e9   /* outputs, checkpoints, calls of a callback */
 
 /* lua_sim.c */
 extern const char *const lsim_side_names[];  /* "left", "right", ... */
 /* refuse a velocity v (DIM components) that the step cannot follow: its
-** CFL step would need more than LSIM_MAX_STEPS steps to t_end.  fnidx: the
+** CFL step would need more than LSIM_MAX_SPAN steps to t_end.  fnidx: the
 ** scene function that gave it (the error names where it was defined), or
 ** 0 (the calling scene line); what names it, formatted only on failure */
 void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,

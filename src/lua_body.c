@@ -312,12 +312,12 @@ static void material_speed(lua_State *L, lsim *ls, int mi, const char *name) {
   const sim *s = &ls->s;
   const material *m = &s->mats[mi];
   double dt = s->cfl * s->g.h / m->c, steps = s->t_end / dt;
-  if (s->dt_fixed > 0 || steps <= LSIM_MAX_STEPS) return;
+  if (s->dt_fixed > 0 || steps <= LSIM_MAX_SPAN) return;
   chk_error(L, "body '%s': material '%s' has the wave speed sqrt((K + 4G/3) "
                "/ density) = %g (K = %g, G = %g, density = %g): its step "
                "cfl * cell / speed = %g would take %.3g steps to t_end = %g "
                "(at most %.0e)", name, m->name, m->c, m->K, m->G, m->rho, dt,
-            steps, s->t_end, LSIM_MAX_STEPS);
+            steps, s->t_end, LSIM_MAX_SPAN);
 }
 
 /* r along d as the nearest image where d is periodic */

@@ -82,14 +82,14 @@ void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,
   for (d = 0; d < DIM; d++) speed = hypot(speed, v[d]);
   steps = span * speed / (s->cfl * s->g.h);
   /* 1e150: squared, a speed stays finite */
-  if (speed <= 1e150 && steps <= LSIM_MAX_STEPS) return;
+  if (speed <= 1e150 && steps <= LSIM_MAX_SPAN) return;
   va_start(ap, fmt);
   vsnprintf(what, sizeof what, fmt, ap);
   va_end(ap);
   snprintf(msg, sizeof msg, "%s: a speed of %g is more than the step can "
            "follow: its CFL step cfl * cell / speed = %g would need %.3g "
            "steps to t_end = %g (at most %.0e)", what, speed,
-           s->cfl * s->g.h / speed, steps, s->t_end, LSIM_MAX_STEPS);
+           s->cfl * s->g.h / speed, steps, s->t_end, LSIM_MAX_SPAN);
   if (fnidx) chk_fnerror(L, fnidx, "%s", msg);
   luaL_error(L, "%s", msg);
 }
@@ -344,11 +344,11 @@ int lsim_new(lua_State *L) {
     for (k = 0; k < NSIDES; k++)
       lsim_check_speed(L, ls, s->sides[k].v, 0, "sim: sides.%s velocity",
                        lsim_side_names[k]);
-    if (s->dt_fixed > 0 && s->t_end / s->dt_fixed > LSIM_MAX_STEPS)
+    if (s->dt_fixed > 0 && s->t_end / s->dt_fixed > LSIM_MAX_SPAN)
       chk_error(L, "sim: field 'dt' = %g would take %.3g steps to t_end = %g "
                    "(at most %.0e); give 'dt' >= %g", s->dt_fixed,
-                s->t_end / s->dt_fixed, s->t_end, LSIM_MAX_STEPS,
-                s->t_end / LSIM_MAX_STEPS);
+                s->t_end / s->dt_fixed, s->t_end, LSIM_MAX_SPAN,
+                s->t_end / LSIM_MAX_SPAN);
     s->sort_every = (int)chk_num(L, 1, what, "sort_every", 20, 0, 1e9, CHK_INT);
     s->mcut_rel = chk_num(L, 1, what, "mass_cutoff", 1e-9, 0, 1, 0);
     sim_set_threads(s, (int)chk_num(L, 1, what, "threads", lsim_env_threads(),

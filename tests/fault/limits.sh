@@ -135,6 +135,22 @@ run run s.lua --quiet --out o --set x=1e400; rc=$?
 [ $rc -eq 1 ]; ok $? "--set x=1e400: refused" "$(st $rc)"
 refused "  says it must be finite" "--set x=1e400" "finite"
 
+# a t_end never meant to be reached, stepped by hand: accepted (sim:step
+# always ends); only a run to that t_end is refused
+cat >hand.lua <<'EOF'
+local mvmpm = require "mvmpm"
+local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 400, t_end = 1e9, sides = "free"}
+s:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.01},
+        material = mvmpm.elastic {K = 1, G = 0.5, density = 1}, velocity = {0.1, 0}}
+s:step(3)
+print("stepped", s.t > 0)
+local ok, err = pcall(s.run, s)
+print(ok and "ran" or err)
+EOF
+run test hand.lua; rc=$?
+has out.txt "stepped	true"; ok $? "t_end = 1e9 (2e12 steps away) stepped by hand: accepted" "$(grep -m1 stepped out.txt)"
+has out.txt "run: from t ="; ok $? "  a run to that t_end: refused with its step count" "$(grep -m1 -o 'run: from.*' out.txt | cut -c1-120)"
+
 mkfifo f.lua f.h5
 run run f.lua --quiet; rc=$?
 [ $rc -eq 1 ]; ok $? "a FIFO as the scene: refused, no hang" "$(st $rc)"

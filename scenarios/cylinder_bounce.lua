@@ -16,7 +16,8 @@ local P = mvmpm.params {
   cfl = 0.25,
   update = "musl",
   shape = "linear",
-  transfer = "flip",   -- or "apic" (with shape gimp or bspline2)
+  transfer = "flip",   -- or "apic" (with shape gimp or bspline2), "xpic"
+  xpic = 2,            -- XPIC's order (2 or 3)
   separation = true,   -- contact only once surfaces meet
 }
 
@@ -29,6 +30,7 @@ local sim = mvmpm.sim {
   update = P.update,
   flip = P.flip,
   transfer = P.transfer,
+  xpic = P.xpic,
   cfl = P.cfl,
   t_end = P.t_end,
   sides = {"wall", friction = P.friction},

@@ -95,6 +95,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
   const int full = mode == G2P_MOVE, nw = shape_width(kind);
   const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
+  const int xp = s->transfer == TRANSFER_XPIC;
   /* the dense grid only through these: loads need not wait for stores */
   const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
   const double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
@@ -166,6 +167,9 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     } else if (apic) {
       nvx = vx;
       nvy = vy;
+    } else if (xp) { /* f holds XPIC's correction c (xpic.c) */
+      nvx = vx + ax;
+      nvy = vy + ay;
     } else {
       nvx = flip * (ps->v[0][i] + ax) + pic * vx;
       nvy = flip * (ps->v[1][i] + ay) + pic * vy;

@@ -55,6 +55,7 @@ typedef struct lsim {
   int restarted;          /* the output continues a checkpoint's */
   long csv_resume;        /* restarted: the table's length then, or -1 */
   char ck_last[1100];     /* the newest checkpoint written */
+  int advised;            /* sim_advice was printed (once, at the first run) */
 } lsim;
 
 typedef struct lbody {

@@ -207,9 +207,9 @@ int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
-      "wall_remap", "normals", NULL};
+      "wall_remap", "normals", "xpic", NULL};
   static const char *const updates[] = {"usl", "musl", NULL};
-  static const char *const transfers[] = {"flip", "apic", NULL};
+  static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
@@ -324,8 +324,14 @@ int lsim_new(lua_State *L) {
     ls->ok = 1;
     s = &ls->s;
     s->update = chk_option(L, 1, what, "update", UPDATE_MUSL, updates);
-    if (chk_option(L, 1, what, "transfer", TRANSFER_FLIP, transfers) ==
-        TRANSFER_APIC) {
+    s->transfer = chk_option(L, 1, what, "transfer", TRANSFER_FLIP, transfers);
+    {
+      double m = chk_num(L, 1, what, "xpic", 2, 2, 3, 0);
+      if (m != 2 && m != 3)
+        luaL_error(L, "sim: field 'xpic' (the XPIC order) must be 2 or 3 (got %g)", m);
+      s->xpic = (int)m;
+    }
+    if (s->transfer == TRANSFER_APIC) {
       /* measured: a spinning disc on linear hats with C = grad v has
       ** det F < 0 within 450 steps, in USL and MUSL alike */
       if (shape == SHAPE_LINEAR)
@@ -688,6 +694,10 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "n") == 0) lua_pushinteger(L, (lua_Integer)s->ps.n);
   else if (strcmp(k, "nbody") == 0) lua_pushinteger(L, s->nbody);
   else if (strcmp(k, "nfield") == 0) lua_pushinteger(L, s->nfield);
+  else if (strcmp(k, "advice") == 0) {
+    const char *adv = sim_advice(s);
+    if (adv) lua_pushstring(L, adv); else lua_pushnil(L);
+  }
   else if (strcmp(k, "cell") == 0) lua_pushnumber(L, s->g.h);
   else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->flip);
   else if (strcmp(k, "cfl") == 0) lua_pushnumber(L, s->cfl);
@@ -710,7 +720,8 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL ? "musl" : "usl");
   else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);
   else if (strcmp(k, "transfer") == 0)
-    lua_pushstring(L, s->transfer == TRANSFER_APIC ? "apic" : "flip");
+    lua_pushstring(L, s->transfer == TRANSFER_APIC ? "apic"
+                      : s->transfer == TRANSFER_XPIC ? "xpic" : "flip");
   else {
     luaL_getmetafield(L, 1, "methods");
     lua_getfield(L, -1, k);

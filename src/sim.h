@@ -26,7 +26,7 @@ enum update_kind { UPDATE_USL, UPDATE_MUSL };
 enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
-enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC };
+enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
 /* how contact normals are taken (contact.c): each field's mass or volume
 ** gradient against the others', the larger volume gradient's direction
 ** for both sides, or the least-squares plane between the particles */
@@ -85,6 +85,7 @@ typedef struct sim {
   int update;        /* enum update_kind */
   double flip;       /* FLIP fraction of the velocity update, 0 = PIC */
   int transfer;      /* enum transfer_kind */
+  int xpic;          /* XPIC: its order m, 2 or 3 (xpic.c) */
   int faff;          /* APIC: particle field "affine" (C, row major) */
   double cfl;        /* Courant number for the automatic step */
   double dt_fixed;   /* > 0: fixed step */
@@ -186,6 +187,10 @@ int sim_prepare(sim *s);
 int sim_step(sim *s);
 /* the step the CFL rule gives now */
 double sim_stable_dt(const sim *s);
+/* a warning about the scheme the scene chose, or NULL: linear hats under
+** pure FLIP (the defaults) with walls or contact, whose energy error on
+** an impact grows as the grid is refined (docs/accuracy.md) */
+const char *sim_advice(const sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
 /* total energy, kinetic + strain + lag.  Velocities and stresses are a
@@ -208,6 +213,7 @@ int p2g_mark(sim *s);          /* mark.c: shared nodes and their slots;
 void p2g(sim *s);              /* p2g.c: mass, momentum, force */
 void solve_momentum(sim *s);   /* solve.c: q = p + dt f */
 void solve_velocity(sim *s);   /* solve.c: q -> vL, f -> dv */
+void xpic(sim *s);             /* xpic.c: f -> the XPIC(m) correction c */
 void solve_remap(sim *s);      /* solve.c: p -> remapped velocity */
 void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */

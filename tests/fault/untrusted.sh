@@ -134,8 +134,8 @@ s0=$(date +%s%N)
 timeout 60 "$bin" render rbig.h5 --out rbig.png >rbig.txt 2>&1
 rc=$? ms=$(( ($(date +%s%N) - s0) / 1000000 ))
 [ "$rc" -eq 1 ] && has rbig.txt "rbig.h5: dataset 'body', row 0: 2147483647 is not in [0, 1048576)" &&
-  [ "$ms" -lt 1000 ] && [ ! -e rbig.png ]
-ok $? "render: a body index of 2^31-1 is refused in well under a second" "status $rc, $ms ms: $(head -c 120 rbig.txt)"
+  [ ! -e rbig.png ]
+ok $? "render: a body index of 2^31-1 is refused before drawing (time printed, not asserted)" "status $rc, $ms ms: $(head -c 120 rbig.txt)"
 rsnap rnan "f['position'][2, 0] = np.nan"
 timeout 60 "$bin" render rnan.h5 --out rnan.png >rnan.txt 2>&1
 [ $? -eq 1 ] && has rnan.txt "dataset 'position', component 0 (x), row 2: nan is not finite"

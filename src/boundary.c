@@ -136,20 +136,24 @@ void boundary_apply(sim *s) {
 ** impacts.  So "auto" holds the walls only in scenes with gravity.  The
 ** normal component only: the tangential one follows friction's rule.
 */
-void boundary_remap(sim *s) {
+void boundary_normal_set(sim *s, double *const a[DIM],
+                         double *const sa[DIM], int vel) {
   grid *g = &s->g;
   int k;
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
     int d = k / 2, o = 1 - d, line, first, last, j;
+    double v = vel ? sd->v[d] : 0.0;
     if (sd->kind != SIDE_WALL) continue;
     wall_lines(g, k, &first, &last);
     for (line = first; line <= last; line++)
       for (j = 0; j < g->n[o]; j++) {
         int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;
         if (!sd->acted[(size_t)(line - first) * g->n[o] + j]) continue;
-        g->p[d][n] = sd->v[d];
-        for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) g->sp[d][sl] = sd->v[d];
+        a[d][n] = v;
+        for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) sa[d][sl] = v;
       }
   }
 }
+
+void boundary_remap(sim *s) { boundary_normal_set(s, s->g.p, s->g.sp, 1); }

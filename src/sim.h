@@ -225,6 +225,11 @@ void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
                                   remapped velocity (MUSL) */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */
+/* boundary.c: at every node where a wall acted this step, the normal
+** component of the node array a and of its slots' array sa set to the
+** wall's normal velocity (vel = 1) or to 0 (vel = 0) */
+void boundary_normal_set(sim *s, double *const a[DIM],
+                         double *const sa[DIM], int vel);
 /* whether MUSL's remap holds the walls (boundary_remap) */
 int sim_wall_hold(const sim *s);
 void g2p(sim *s);              /* g2p.c: velocities; USL: positions, grad v;

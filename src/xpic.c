@@ -110,25 +110,6 @@ static void nodes_part(void *arg, int t, int nparts) {
   nodes(i0, i1, g->sm, g->sp, g->sq, g->sf, j->stage);
 }
 
-/* the normal part of c off at the nodes where a wall acted */
-static void walls(sim *s) {
-  grid *g = &s->g;
-  int k;
-  for (k = 0; k < NSIDES; k++) {
-    const side *sd = &s->sides[k];
-    int d = k / 2, o = 1 - d, line, first, last, j;
-    if (sd->kind != SIDE_WALL) continue;
-    if (k & 1) { first = g->pad + g->cells[d]; last = g->n[d] - 1; }
-    else { first = 0; last = g->pad; }
-    for (line = first; line <= last; line++)
-      for (j = 0; j < g->n[o]; j++) {
-        int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;
-        if (!sd->acted[(size_t)(line - first) * g->n[o] + j]) continue;
-        g->f[d][n] = 0;
-        for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) g->sf[d][sl] = 0;
-      }
-  }
-}
 
 void xpic(sim *s) {
   xjob j = {s, 0};
@@ -141,5 +122,6 @@ void xpic(sim *s) {
     j.stage = 2;
     par_run(s->par, nodes_part, &j);
   }
-  walls(s);
+  /* the correction's normal part off where a wall acted */
+  boundary_normal_set(s, s->g.f, s->g.sf, 0);
 }

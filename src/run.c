@@ -340,11 +340,17 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   int show = ls->progress && isatty(2);
   simidx = lua_absindex(L, simidx);
   if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
-  if (!ls->advised) { /* once, now that the bodies (fields) are known */
+  if (!ls->advised) { /* now that the bodies (fields) are known */
+    /* printed once per process: a study or a test script that builds
+    ** many such scenes says it once; each keeps it in sim.advice */
+    static int printed;
     const char *adv = sim_advice(s);
     ls->advised = 1;
-    if (adv) fprintf(stderr, "mvmpm: warning: %s: %s\n",
-                     ls->scene[0] ? ls->scene : "sim", adv);
+    if (adv && !printed) {
+      printed = 1;
+      fprintf(stderr, "mvmpm: warning: %s: %s\n",
+              ls->scene[0] ? ls->scene : "sim", adv);
+    }
   }
   if (isfinite(t_end)) run_check(L, simidx, ls, t_end);
   out_start(L, ls);

@@ -16,36 +16,16 @@
 --   ./mvmpm test studies/roll.lua          (STUDY_QUICK=1: fewer settings)
 local mvmpm = require "mvmpm"
 local S = require "mvmpm.study"
+local I = require "mvmpm.incline"
 
-local g, R, T = 1, 0.5, 2
+local g, R, T = I.g, I.R, I.T
 
 -- one regime at settings s: slopes of v and omega after the settling
 local function incline(s, clock, deg, mu)
-  local th = math.rad(deg)
-  local sim = mvmpm.sim {
-    domain = {x = {0, 4}, y = {0, 1.5}}, cell = 1 / s.cells, ppc = s.ppc,
-    shape = s.shape, transfer = s.transfer, flip = s.flip, update = s.update,
-    cfl = s.cfl, t_end = T, gravity = {g * math.sin(th), -g * math.cos(th)},
-    sides = {left = "periodic", right = "periodic",
-             bottom = {"wall", friction = mu}, top = "wall"},
-  }
-  local disc = sim:body {shape = mvmpm.disk {center = {1, R}, radius = R},
-                         material = mvmpm.elastic {K = 100, G = 50, density = 1}}
-  local n, ts, vs, ws, hop = 40, {}, {}, {}, 0
-  for k = 1, n do
-    clock.run(sim, T * k / n)
-    local d = disc:diag()
-    ts[k], vs[k], ws[k] = sim.t, d.vx, -d.omega
-    hop = math.max(hop, d.y - R)
-  end
-  local function slope(y)
-    local sx, sy, sxx, sxy, c = 0, 0, 0, 0, 0
-    for i = n // 4, n do
-      sx, sy, sxx, sxy, c = sx + ts[i], sy + y[i], sxx + ts[i] ^ 2, sxy + ts[i] * y[i], c + 1
-    end
-    return (c * sxy - sx * sy) / (c * sxx - sx * sx)
-  end
-  return slope(vs), slope(ws), hop, th
+  local r = I.run {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer,
+                   flip = s.flip, update = s.update, cfl = s.cfl, deg = deg, mu = mu,
+                   run = clock.run}
+  return r.a, r.alpha, r.hop, r.th
 end
 
 local case = {

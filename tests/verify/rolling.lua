@@ -20,36 +20,12 @@
 -- are printed, with their observed order, not asserted (docs/verification.md).
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
+local I = require "mvmpm.incline"
 
-local g, R, T = 1, 0.5, 2
+local g, R, T = I.g, I.R, I.T
 
 local function incline(cells, deg, mu, w0)
-  local th = math.rad(deg)
-  local sim = mvmpm.sim {
-    domain = {x = {0, 4}, y = {0, 1.5}}, cell = 1 / cells, ppc = 2, cfl = 0.25, t_end = T,
-    gravity = {g * math.sin(th), -g * math.cos(th)},
-    sides = {left = "periodic", right = "periodic", bottom = {"wall", friction = mu}, top = "wall"},
-  }
-  local disc = sim:body {shape = mvmpm.disk {center = {1, R}, radius = R},
-                         material = mvmpm.elastic {K = 100, G = 50, density = 1},
-                         angular_velocity = w0}
-  local n, ts, vs, ws, hop, wmin, wmax = 40, {}, {}, {}, 0, math.huge, -math.huge
-  for k = 1, n do
-    sim:run(T * k / n)
-    local d = disc:diag()
-    ts[k], vs[k], ws[k] = sim.t, d.vx, -d.omega
-    hop = math.max(hop, d.y - R)
-    wmin, wmax = math.min(wmin, -d.omega), math.max(wmax, -d.omega)
-  end
-  local function slope(y)
-    local sx, sy, sxx, sxy, c = 0, 0, 0, 0, 0
-    for i = n // 4, n do
-      sx, sy, sxx, sxy, c = sx + ts[i], sy + y[i], sxx + ts[i] ^ 2, sxy + ts[i] * y[i], c + 1
-    end
-    return (c * sxy - sx * sy) / (c * sxx - sx * sx)
-  end
-  local e = sim:energy()
-  return {a = slope(vs), alpha = slope(ws), hop = hop, e = e, th = th, wmin = wmin, wmax = wmax}
+  return I.run {cells = cells, deg = deg, mu = mu, w0 = w0}
 end
 
 local function order(e)

@@ -1,0 +1,48 @@
+-- mvmpm.incline: a disc on an incline, the incline being the floor wall
+-- of a box with gravity rotated by theta (g = 1), periodic along the
+-- incline; an elastic disc (K = 100, G = 50, density 1, R = 0.5) starts
+-- touching the floor.  Measured: least-squares slopes of the centroid
+-- velocity along the incline and of the spin (clockwise = down the
+-- incline) over the last three quarters of 40 samples (the first quarter
+-- is the settling).  Shared by studies/roll.lua and
+-- tests/verify/rolling.lua.
+local mvmpm = require "mvmpm"
+local M = {g = 1, R = 0.5, T = 2}
+
+-- o: cells, deg, mu, and optionally ppc (2), shape, transfer, flip,
+-- update, cfl (0.25), w0 (initial spin), run (function(sim, t), default
+-- sim:run).  Returns {a, alpha, hop, e (sim:energy()), th, wmin, wmax}.
+function M.run(o)
+  local g, R, T = M.g, M.R, M.T
+  local th = math.rad(o.deg)
+  local sim = mvmpm.sim {
+    domain = {x = {0, 4}, y = {0, 1.5}}, cell = 1 / o.cells, ppc = o.ppc or 2,
+    shape = o.shape, transfer = o.transfer, flip = o.flip, update = o.update,
+    cfl = o.cfl or 0.25, t_end = T, gravity = {g * math.sin(th), -g * math.cos(th)},
+    sides = {left = "periodic", right = "periodic",
+             bottom = {"wall", friction = o.mu}, top = "wall"},
+  }
+  local disc = sim:body {shape = mvmpm.disk {center = {1, R}, radius = R},
+                         material = mvmpm.elastic {K = 100, G = 50, density = 1},
+                         angular_velocity = o.w0}
+  local run = o.run or function(s, t) s:run(t) end
+  local n, ts, vs, ws, hop, wmin, wmax = 40, {}, {}, {}, 0, math.huge, -math.huge
+  for k = 1, n do
+    run(sim, T * k / n)
+    local d = disc:diag()
+    ts[k], vs[k], ws[k] = sim.t, d.vx, -d.omega
+    hop = math.max(hop, d.y - R)
+    wmin, wmax = math.min(wmin, -d.omega), math.max(wmax, -d.omega)
+  end
+  local function slope(y)
+    local sx, sy, sxx, sxy, c = 0, 0, 0, 0, 0
+    for i = n // 4, n do
+      sx, sy, sxx, sxy, c = sx + ts[i], sy + y[i], sxx + ts[i] ^ 2, sxy + ts[i] * y[i], c + 1
+    end
+    return (c * sxy - sx * sy) / (c * sxx - sx * sx)
+  end
+  return {a = slope(vs), alpha = slope(ws), hop = hop, e = sim:energy(), th = th,
+          wmin = wmin, wmax = wmax}
+end
+
+return M

@@ -322,6 +322,29 @@ static int lclock(lua_State *L) {
   return 1;
 }
 
+/* mvmpm.NAME that the module lacks: a module of the library (mvmpm.pack)
+** is named with its require; anything else gets the nearest name.  Only
+** string keys: mvmpm[1] is plain nil */
+static int modindex(lua_State *L) {
+  const char *k;
+  if (lua_type(L, 2) != LUA_TSTRING) return 0;
+  k = lua_tostring(L, 2);
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.luadir");
+  if (lua_isstring(L, -1) && strlen(k) < 64 && !strchr(k, '/') &&
+      !strchr(k, '.')) {
+    char path[PATH_MAX + 80];
+    FILE *f;
+    snprintf(path, sizeof path, "%s/mvmpm/%s.lua", lua_tostring(L, -1), k);
+    if ((f = fopen(path, "r"))) {
+      fclose(f);
+      return luaL_error(L, "mvmpm.%s is a module of its own: local %s = "
+                           "require \"mvmpm.%s\"", k, k, k);
+    }
+  }
+  lua_pop(L, 1);
+  return chk_nokey(L, "mvmpm", k, 1, NULL);
+}
+
 int luaopen_mvmpm(lua_State *L) {
   static const luaL_Reg fns[] = {{"sim", lsim_new}, {"params", params},
                                  {"load", load}, {"clock", lclock},
@@ -329,6 +352,10 @@ int luaopen_mvmpm(lua_State *L) {
   int mod;
   luaL_newlib(L, fns);
   mod = lua_gettop(L);
+  lua_createtable(L, 0, 1);
+  lua_pushcfunction(L, modindex);
+  lua_setfield(L, -2, "__index");
+  lua_setmetatable(L, mod);
   lua_pushstring(L, MVMPM_VERSION);
   lua_setfield(L, mod, "version");
   lua_pushinteger(L, DIM);

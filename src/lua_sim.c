@@ -723,8 +723,12 @@ static int lindex(lua_State *L) {
     lua_pushstring(L, s->transfer == TRANSFER_APIC ? "apic"
                       : s->transfer == TRANSFER_XPIC ? "xpic" : "flip");
   else {
+    static const char *const fields[] = {
+        "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "cell",
+        "flip", "cfl", "friction", "removed", "threads", "shared_nodes",
+        "memory", "outdir", "update", "shape", "transfer", NULL};
     luaL_getmetafield(L, 1, "methods");
-    lua_getfield(L, -1, k);
+    if (lua_getfield(L, -1, k) == LUA_TNIL) chk_nokey(L, "sim", k, -2, fields);
   }
   return 1;
 }

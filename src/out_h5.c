@@ -634,6 +634,11 @@ static int field(h5s *S, particles *ps, hid_t d, const char *name,
   if (f < 0)
     return fail(S, "cannot add field '%s' (more than %d fields or out of "
                 "memory)", name, PF_MAXFIELDS);
+  { /* its components by name (affine.xy), as the writer named them */
+    char comps[128];
+    if (getstr(S, d, name, "components", comps, sizeof comps) < 0) return -1;
+    if (comps[0]) particles_name_comps(&ps->fields[f], comps);
+  }
   return f;
 }
 

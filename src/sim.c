@@ -238,10 +238,17 @@ double sim_law(const sim *s, int32_t a, int32_t b) {
 
 int sim_enable_apic(sim *s) {
   s->transfer = TRANSFER_APIC;
-  if (s->faff < 0)
+  if (s->faff < 0) {
+    int c;
+    /* in snapshots too: the affine field is half the particle's velocity
+    ** state under APIC */
     s->faff = particles_add_field(&s->ps, "affine", NTENS, PF_DOUBLE, "1/T",
-                                  PF_RESTART);
-  return s->faff < 0 ? -1 : 0;
+                                  PF_OUTPUT | PF_RESTART);
+    if (s->faff < 0) return -1;
+    for (c = 0; c < NTENS; c++)
+      s->ps.fields[s->faff].comp_names[c] = particles_tens_name(c);
+  }
+  return 0;
 }
 
 int sim_enable_bonds(sim *s) {

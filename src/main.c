@@ -536,14 +536,19 @@ static int cmd_run(int argc, char **argv) {
     sim *s = &ls->s;
     printf("%s: %ld steps to t = %g, %zu particles, %d bodies, %.2f s wall\n",
            o.scene, s->step, s->t, s->ps.n, s->nbody, now() - w0);
+    /* the residual against the budget's scale: a share of the initial
+    ** energy would hold the potential's value, which the origin sets */
     printf("energy: initial %.6g  kinetic %.6g  strain %.6g  dissipated %.6g  "
-           "boundary work %.6g  residual %.3g (%.3g%% of initial)\n",
+           "boundary work %.6g  residual %.3g (%.3g%% of the scale %.6g)\n",
            s->e.initial, s->e.kinetic, s->e.strain, s->e.friction, s->e.boundary,
            sim_residual(s),
-           100 * sim_residual(s) / (s->e.initial > 0 ? s->e.initial : 1));
-    if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0)
-      printf("        plastic %.6g  viscous %.6g  thermal work %.6g\n",
-             s->e.plastic, s->e.viscous, s->e.thermal);
+           100 * sim_residual(s) / (sim_scale(s) > 0 ? sim_scale(s) : 1),
+           sim_scale(s));
+    if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0 ||
+        s->e.settled != 0)
+      printf("        plastic %.6g  viscous %.6g  thermal work %.6g  settled "
+             "%.6g\n", s->e.plastic, s->e.viscous, s->e.thermal,
+             s->e.settled);
     if (s->nremoved) printf("%zu particles left the domain and were removed\n", s->nremoved);
     printf("output: %s/ (particles.xmf, %d snapshots, diagnostics.csv)\n",
            ls->outdir, ls->nsnap);

@@ -9,7 +9,8 @@
 #   make pbx-scale the PBX grain bed's cost against its grain count (a few minutes)
 #   make study     what accuracy costs in time: studies/*.lua, CSVs in out/study,
 #                  plots in docs/figures/accuracy_*.png (docs/accuracy.md)
-#   make check-paraview  ParaView's pvbatch opens a run's XDMF (needs Debian's paraview)
+#   make check-paraview  ParaView's three XDMF readers open a run's XDMF (installs
+#                  Debian's paraview first: make deps-paraview)
 #   make install   PREFIX/bin/mvmpm, the Lua modules, mvmpm.so for a stock lua5.4,
 #                  the manual mvmpm(1); PREFIX=/usr/local, DESTDIR for staging
 #   make CC=clang  the same build with clang; PORTABLE=1 without -march=native
@@ -193,16 +194,25 @@ study: $(BIN)
 	@mkdir -p out/study docs/figures
 	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
 
-.PHONY: all deps unit test bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
+.PHONY: all deps deps-paraview unit test bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d) $(PICOBJ:.o=.d)
 
-# ParaView (Debian's paraview, not a build dependency) opens a run's XDMF
-# series and must see every particle and every array of every snapshot
-check-paraview: $(BIN)
+# ParaView (Debian's paraview, installed by make deps-paraview; not a
+# build dependency) opens a run's XDMF series with each of its three
+# XDMF readers, and each must see every particle and every array of
+# every snapshot, bit for bit
+PV_READERS = XDMFReader Xdmf3ReaderS Xdmf3ReaderT
+deps-paraview:
+	@if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	command -v pvbatch >/dev/null || { $$SUDO apt-get update && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y paraview python3-h5py python3-numpy; }
+check-paraview: $(BIN) deps-paraview
 	@rm -rf build/check-paraview
 	./$(BIN) run scenarios/cylinder_bounce.lua --set friction=0.1 --out build/check-paraview --quiet
-	pvbatch tests/tools/check_xdmf.py build/check-paraview/particles.xmf \
-	  $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done)
+	@for r in $(PV_READERS); do \
+	  pvbatch tests/tools/check_xdmf.py build/check-paraview/particles.xmf \
+	    $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done) --reader $$r || exit 1; \
+	done
 
 # the granular shear cell (docs/shear.md) at the report's resolution, both
 # scenes and both bond strengths, in the background:

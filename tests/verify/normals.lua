@@ -13,108 +13,27 @@
 -- nodes within R cells (sim.normal_window = R; "method" alone: R = 0).
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
+local C = require "mvmpm.normals"
 
--- ("volume" alone is left out for time: measured within 0.5 % of "mass"
--- on the block, whose bodies have one density, and between mass and
--- plane on the discs)
-local methods = {"mass", "plane", "maxvolume/4", "plane/4"}
+-- ("volume" is left out for time: measured within 0.5 % of "mass" on the
+-- block, whose bodies have one density; "plane" on the discs, node by
+-- node and over a window: docs/verification.md, studies/normals.lua)
+local methods = {"mass", "maxvolume/4"}
 local solid = {"mass", "maxvolume"}
-local TH = math.rad(30)
 
--- least-squares slope of v(t)
-local function slope(ts, vs)
-  local n, st, sv, stt, stv = #ts, 0, 0, 0, 0
-  for i = 1, n do
-    st, sv = st + ts[i], sv + vs[i]
-    stt, stv = stt + ts[i] ^ 2, stv + ts[i] * vs[i]
-  end
-  return (n * stv - st * sv) / (n * stt - st * st)
-end
-
--- "method/R" -> the sim options
-local function opts(method)
-  local m, w = method:match("^(%a+)/(%d+)$")
-  return m or method, tonumber(w) or 0
-end
-
--- the block (side L = 0.2, k cells across it) on the slope; deg: the
--- slope and the block rotated by deg to the grid, nil: gravity rotated by
--- 30 degrees instead.  Returns the acceleration along the slope over the
--- one expected, the largest spin (rad per time), the largest speed across
--- the slope over the speed along it at the end (both after the block has
--- settled, t > 0.1), the block's rotation (rad, the spin integrated) and
--- how far its centre moved off the slope over L (the hop)
+-- the cases (lua/mvmpm/normals.lua; the block's "aligned" when deg is
+-- nil), as tuples: the block's acceleration
+-- over the reference, largest spin, speed across / along, rotation, hop;
+-- the discs' tangential velocity kept, largest spin, energy kept
 local function block(k, method, mu, deg, shape)
-  local L, T = 0.2, 0.4
-  local th = deg and math.rad(deg) or 0
-  local meth, win = opts(method)
-  local S, N = {math.cos(th), -math.sin(th)}, {math.sin(th), math.cos(th)}
-  local P = deg and {0.05, 0.75} or {0.0, 0.4}
-  local function pt(a, b) return {P[1] + a * S[1] + b * N[1], P[2] + a * S[2] + b * N[2]} end
-  local sim = mvmpm.sim {
-    domain = {x = {0, 1}, y = {0, 1}}, cell = L / k, ppc = 2, sides = "free",
-    gravity = deg and {0, -1} or {math.sin(TH), -math.cos(TH)}, shape = shape or "linear",
-    t_end = T, normals = meth, normal_window = win, contact = {friction = mu}}
-  local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}
-  sim:body {name = "slope", material = m, driven = {0, 0},
-    shape = mvmpm.polygon {pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}}
-  local b = sim:body {name = "block", material = m,
-    shape = mvmpm.polygon {pt(0.1, 0), pt(0.1 + L, 0), pt(0.1 + L, L), pt(0.1, L)}}
-  -- the slope's frame: along S, across N
-  local s0, n0 = S, N
-  if not deg then s0, n0 = {1, 0}, {0, 1} end
-  local ts, vs, spin, across, last, rot, t0 = {}, {}, 0, 0, 0, 0, 0
-  local d0 = b:diag()
-  sim:every {steps = 1, fn = function(s)
-    local d = b:diag()
-    rot, t0 = rot + d.omega * (s.t - t0), s.t
-    if s.t < 0.1 then return end
-    ts[#ts + 1], vs[#vs + 1] = s.t, d.vx * s0[1] + d.vy * s0[2]
-    spin = math.max(spin, math.abs(d.omega))
-    across = math.max(across, math.abs(d.vx * n0[1] + d.vy * n0[2]))
-    last = vs[#vs]
-  end}
-  sim:run()
-  local d1 = b:diag()
-  local ref = math.sin(deg and th or TH) - mu * math.cos(deg and th or TH)
-  local hop = ((d1.x - d0.x) * n0[1] + (d1.y - d0.y) * n0[2]) / L
-  return slope(ts, vs) / ref, spin, across / math.max(math.abs(last), 1e-30),
-         math.abs(rot), math.abs(hop)
+  local r = C.block {k = k, method = method, mu = mu, deg = deg, shape = shape}
+  return r.a, r.spin, r.across, r.rot, r.hop
 end
-
--- two discs of radius 0.2 meeting at relative speed 0.28 with their
--- centres' line offset 0.2 across the approach; returns the relative
--- velocity across the line of centres (taken at closest approach) after
--- over before, the largest spin (rad per time; the discs' relative
--- angular momentum about the contact is zero before) and the total
--- energy (kinetic + strain) after over before
-local function discs(cells, method, shape)
-  local o = 0.2 / math.sqrt(2)
-  local meth, win = opts(method)
-  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / cells,
-    ppc = 2, sides = "free", t_end = 3.0, normals = meth, normal_window = win,
-    shape = shape or "linear"}
-  local m = mvmpm.elastic {E = 1000, nu = 0.3, density = 1000}
-  local a = sim:body {name = "lower", material = m, velocity = {0.1, 0.1},
-    shape = mvmpm.disk {center = {0.2, 0.2}, radius = 0.2}}
-  local b = sim:body {name = "upper", material = m, velocity = {-0.1, -0.1},
-    shape = mvmpm.disk {center = {0.8 + o, 0.8 - o}, radius = 0.2}}
-  local dmin, nx, ny, spin = math.huge, 0, 0, 0
-  local e0 = sim:energy()
-  local a0, b0 = a:diag(), b:diag()
-  sim:every {steps = 1, fn = function()
-    local da, db = a:diag(), b:diag()
-    local dx, dy = db.x - da.x, db.y - da.y
-    local d = math.sqrt(dx * dx + dy * dy)
-    if d < dmin then dmin, nx, ny = d, dx / d, dy / d end
-    spin = math.max(spin, math.abs(da.omega), math.abs(db.omega))
-  end}
-  sim:run()
-  local a1, b1, e1 = a:diag(), b:diag(), sim:energy()
-  local function across(p, q) return (q.vx - p.vx) * -ny + (q.vy - p.vy) * nx end
-  return across(a1, b1) / across(a0, b0), spin,
-         (e1.kinetic + e1.strain) / (e0.kinetic + e0.strain)
+local function discs(cells, method)
+  local r = C.discs {cells = cells, method = method, offset = 0.2}
+  return r.kept, r.spin, r.energy
 end
+local opts = C.opts
 
 -- error at each resolution and the observed order between the last two
 local function row(name, res, errs)
@@ -188,21 +107,23 @@ local WIN = "maxvolume/4"
 for _, c in ipairs(DIAG) do
   local deg, mu = c[1], c[2]
   V.case(string.format("block on a flat body rotated %d degrees to the grid, mu = %g", deg, mu))
-  local lin, gim = {}, {}
+  local lin, gim, pl = {}, {}, {}
   for i, k in ipairs(K) do
     lin[i] = {block(k, WIN, mu, deg, "linear")}
+    pl[i] = {block(k, "plane/4", mu, deg, "linear")}
     if k <= 8 then gim[i] = {block(k, WIN, mu, deg, "gimp")} end
   end
   local node = {block(8, "mass", mu, deg, "linear")}
-  local pl = {block(8, "plane/4", mu, deg, "linear")}
   local function errs(t) local e = {} for i = 1, #t do e[i] = err(t[i][1]) end return e end
   print("     |a / (g (sin - mu cos)) - 1|, cells per block side 4 8 16:")
   row(WIN .. " linear", K, errs(lin))
+  row("plane/4 linear", K, errs(pl))
   print(string.format("     %-34s 4 %.4f  8 %.4f", WIN .. " gimp", err(gim[1][1]), err(gim[2][1])))
-  print(string.format("     at 8 cells: mass (node by node) %.4f, plane/4 %.4f", err(node[1]), err(pl[1])))
-  print("     block rotation (rad) and hop (normal displacement / L), linear:")
+  print(string.format("     mass (node by node) at 8 cells: %.4f", err(node[1])))
+  print("     block rotation (rad) and hop (normal displacement / L), linear, maxvolume/4 | plane/4:")
   for i, k in ipairs(K) do
-    print(string.format("       %2d cells: rotation %.4f  hop %.5f", k, lin[i][4], lin[i][5]))
+    print(string.format("       %2d cells: rotation %.4f  hop %.5f | %.4f %.5f", k, lin[i][4], lin[i][5],
+                        pl[i][4], pl[i][5]))
   end
   local e8 = math.max(err(lin[2][1]), err(gim[2][1]))
   if deg == 45 and mu > 0 then
@@ -212,11 +133,14 @@ for _, c in ipairs(DIAG) do
   else
     V.below(WIN .. ": acceleration error at 8 cells, linear and GIMP", e8, 0.03)
   end
-  V.below(WIN .. ": acceleration error at 16 cells (linear)", err(lin[3][1]), 0.1)
   V.below(WIN .. ": error at 8 cells below node by node's (mass)", err(lin[2][1]), err(node[1]))
+  -- maxvolume's error does not fall at 45 degrees (0.06 at 16 and 32
+  -- cells, frictionless); the plane over the same window converges there
+  V.below("plane/4: acceleration error at 16 cells", err(pl[3][1]), 0.03)
+  V.below("plane/4: acceleration error at 16 cells below that at 4", err(pl[3][1]), err(pl[1][1]))
   -- the target is at 8 cells per block side; at 16 the 45 degree block
-  -- tips and hops more (measured, frictionless: rotation 0.011 rad, hop
-  -- 0.012 L, error 0.056), reported
+  -- tips and hops more with maxvolume (measured, frictionless: rotation
+  -- 0.011 rad, hop 0.012 L), reported
   local rot, hop = 0, 0
   for i = 1, 2 do
     rot = math.max(rot, lin[i][4], gim[i][4])
@@ -227,6 +151,13 @@ for _, c in ipairs(DIAG) do
   V.below(WIN .. ": no hop, normal displacement / L at 4 and 8 cells, both shapes", hop, 0.01)
   V.info(WIN .. ": rotation (rad) at 16 cells, linear", lin[3][4])
   V.info(WIN .. ": hop / L at 16 cells, linear", lin[3][5])
+  -- at 4 cells the window (9 cells) is wider than the block, and the
+  -- plane's block hops up to 0.012 L at 45 degrees: reported
+  local prot, phop = 0, 0
+  for i = 2, #K do prot, phop = math.max(prot, pl[i][4]), math.max(phop, pl[i][5]) end
+  V.below("plane/4: no tipping, rotation (rad) at 8 and 16 cells", prot, 0.0175)
+  V.below("plane/4: no hop, normal displacement / L at 8 and 16 cells", phop, 0.01)
+  V.info("plane/4: hop / L at 4 cells", pl[1][5])
 end
 
 V.case "glancing frictionless discs (offset 0.2, one radius)"
@@ -241,14 +172,12 @@ for _, m in ipairs(methods) do row(m, CELLS, col(r, m, 3, err)) end
 -- by node the best, "plane", loses 10-12 %, over a window of 4 cells 6-8 %
 -- with linear hats (2-4 % with GIMP at 40 and 80 cells, studies/normals.lua),
 -- and none converges from 40 to 80 cells.
-for _, m in ipairs {"plane", "maxvolume/4", "plane/4"} do
+for _, m in ipairs {"maxvolume/4"} do
   V.holds(m .. ": keeps at least mass's tangential velocity at 20, 40, 80",
           no_worse(r, m, 1, err), r[m][2][1])
   V.holds(m .. ": keeps at least mass's energy at 20, 40, 80",
           no_worse(r, m, 3, err), r[m][2][3])
 end
-V.holds("plane: spins the discs no more than mass at 20, 40, 80",
-        no_worse(r, "plane", 2, function(x) return x end), r.plane[2][2])
 for _, m in ipairs(methods) do
   V.info(m .. ": tangential velocity kept at 40 cells (0.98 wanted)", r[m][2][1])
 end

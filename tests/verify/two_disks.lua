@@ -41,34 +41,19 @@ V.above("spin on a single field (no-slip sticking)", one.spin, 0.1)
 -- per radius give 0.079 on one disk and 0.010 on the other (not even
 -- symmetric), 0.057 / 0.031 at 8 cells per radius.
 
--- The same disks (Sulsky's geometry) built here without output: the
--- head-on collision's energy, and the glancing one's tangential velocity,
--- at 20, 40, 80 cells across the square (4, 8, 16 per radius), each with
--- linear hats and GIMP, node-by-node mass normals (the default) against
--- normals over a window of 4 cells.  Returns total energy after over
--- before, and the relative velocity across the closest approach's line
--- of centres after over before (offset > 0)
+-- The same disks (Sulsky's geometry, lua/mvmpm/normals.lua) without
+-- output: the head-on collision's energy, and the glancing one's
+-- tangential velocity, at 20, 40, 80 cells across the square (4, 8, 16
+-- per radius), with linear hats and GIMP, node-by-node mass normals (the
+-- default) against normals over a window of 4 cells.  Returns total
+-- energy after over before, and the relative velocity across the closest
+-- approach's line of centres after over before (offset > 0), and the
+-- impulse across the instantaneous line of centres over that along it
+local C = require "mvmpm.normals"
 local function disks(cells, shape, normals, window, offset)
-  local o = offset / math.sqrt(2)
-  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / cells, ppc = 2,
-    sides = "free", t_end = 3.0, shape = shape, normals = normals, normal_window = window}
-  local m = mvmpm.elastic {E = 1000, nu = 0.3, density = 1000}
-  local a = sim:body {material = m, velocity = {0.1, 0.1},
-    shape = mvmpm.disk {center = {0.2, 0.2}, radius = 0.2}}
-  local b = sim:body {material = m, velocity = {-0.1, -0.1},
-    shape = mvmpm.disk {center = {0.8 + o, 0.8 - o}, radius = 0.2}}
-  local e0, a0, b0 = sim:energy().total, a:diag(), b:diag()
-  local dmin, nx, ny = math.huge, 0, 0
-  sim:every {steps = 1, fn = function()
-    local da, db = a:diag(), b:diag()
-    local dx, dy = db.x - da.x, db.y - da.y
-    local d = math.sqrt(dx * dx + dy * dy)
-    if d < dmin then dmin, nx, ny = d, dx / d, dy / d end
-  end}
-  sim:run()
-  local a1, b1 = a:diag(), b:diag()
-  local function across(p, q) return (q.vx - p.vx) * -ny + (q.vy - p.vy) * nx end
-  return sim:energy().total / e0, offset > 0 and across(a1, b1) / across(a0, b0) or 1
+  local r = C.discs {cells = cells, shape = shape, offset = offset,
+                     method = normals .. "/" .. window}
+  return r.total, r.kept, r.jt
 end
 
 local CELLS = {20, 40, 80}
@@ -97,14 +82,21 @@ end
 
 V.case "glancing: relative velocity across the line of centres kept, 20 40 80 cells"
 for _, shape in ipairs {"linear", "gimp"} do
-  local k, e = {}, {}
+  local k, e, j = {}, {}, {}
   for i, c in ipairs(CELLS) do
-    local en, kt = disks(c, shape, "maxvolume", 4, 0.2)
-    k[i], e[i] = math.abs(kt - 1), math.abs(en - 1)
+    local en, kt, jt = disks(c, shape, "maxvolume", 4, 0.2)
+    k[i], e[i], j[i] = math.abs(kt - 1), math.abs(en - 1), math.abs(jt)
   end
   row(shape .. " maxvolume/4 1 - kept", k)
   row(shape .. " maxvolume/4 |dE|", e)
-  -- known gap: 2 % wanted; measured 4-8 %, not converging from 40 to 80
+  row(shape .. " maxvolume/4 |Jt/Jn|", j)
+  -- known gap: 2 % wanted; measured 4-8 %, not converging from 40 to 80.
+  -- The line of centres turns during the contact and the impact is not
+  -- elastic (a fifth of the kinetic energy stays in vibration), so the
+  -- closest approach's line is no exact reference; what frictionless
+  -- contact must keep small is the impulse across the instantaneous line
+  -- of centres, Jt, against the impulse along it, Jn
   V.info(shape .. " maxvolume/4: tangential velocity lost at 80 cells (0.02 wanted)", k[3])
   V.below(shape .. " maxvolume/4: tangential velocity lost at 40 and 80 cells", math.max(k[2], k[3]), 0.1)
+  V.below(shape .. " maxvolume/4: |Jt / Jn| at 40 and 80 cells", math.max(j[2], j[3]), 0.02)
 end

@@ -8,7 +8,8 @@
 **   n_r = (2 g_r - G) / |2 g_r - G|
 ** With two fields this is (g_A - g_B)/|.|, so n_B = -n_A exactly: both
 ** sides see one interface.  That is sim.normals = "mass", the default;
-** normals() below gives the others ("volume", "maxvolume", "plane").
+** normals() below gives the others ("volume", "maxvolume", "plane"), and
+** with sim.normal_window takes each from the shared nodes around.
 **
 ** The rule (after the grid momentum update, on q = p + dt f):
 **   v_cm = sum q_r / sum m_r (a driven body's velocity replaces it)
@@ -16,10 +17,12 @@
 ** Field r is in contact when it approaches (dn > 0: after this step's
 ** forces, compressive tractions included, it would move into the other
 ** material) and, with the separation check on, the surfaces touch
-** (reach.c).  Then the normal part of dp_r is removed and the tangential
-** part t is reduced by mu dn (Coulomb), or removed if |t| <= mu dn
-** (stick).  The corrections are made to sum to zero (mass-weighted
-** residual), so the node's total momentum is conserved to round-off;
+** (reach.c), or with sim.contact_gap = "step" would meet within the
+** step (closing() below, which also scales the normal part down).
+** Then the normal part of dp_r is removed and the tangential part t is
+** reduced by mu dn (Coulomb), or removed if |t| <= mu dn (stick).  The
+** corrections are made to sum to zero (mass-weighted residual), so the
+** node's total momentum is conserved to round-off;
 ** with two fields the residual is round-off itself.
 **
 ** What contact dissipates.  Over a step the nodal kinetic energy of a

@@ -36,7 +36,10 @@ end
 -- Returns {a (over the reference), spin (largest |omega| after the block
 -- settles, t > 0.1), across (largest speed across the surface over the
 -- speed along it at the end), rot (|spin integrated|, rad), hop (how far
--- the centre moved off the surface, over L), cpu (os.clock seconds)}
+-- the centre moved off the surface, over L), friction (the friction work
+-- over mu m g cos th times the distance slid; g = 1), residual (the
+-- energy budget's residual over the work of gravity, m g sin th times the
+-- distance), cpu (os.clock seconds)}
 function M.block(o)
   local L, T = 0.2, 0.4
   local th = math.rad(o.deg or 30)
@@ -71,7 +74,13 @@ function M.block(o)
   sim:run()
   local d1 = b:diag()
   local ref = math.sin(th) - o.mu * math.cos(th)
+  local e, dist = sim:energy(), (d1.x - d0.x) * S[1] + (d1.y - d0.y) * S[2]
+  -- Coulomb: the friction work is mu times the normal force m g cos th
+  -- times the distance slid
+  local wref = o.mu * b:mass() * math.cos(th) * math.abs(dist)
   return {a = slope(ts, vs) / ref, spin = spin,
+          friction = wref > 0 and e.dissipated / wref or 0,
+          residual = e.residual / math.max(b:mass() * math.abs(dist) * math.sin(th), 1e-300),
           across = across / math.max(math.abs(last), 1e-30), rot = math.abs(rot),
           hop = math.abs((d1.x - d0.x) * N[1] + (d1.y - d0.y) * N[2]) / L,
           cpu = os.clock() - c0}

@@ -27,7 +27,7 @@ local solid = {"mass", "maxvolume"}
 -- the discs' tangential velocity kept, largest spin, energy kept
 local function block(k, method, mu, deg, shape)
   local r = C.block {k = k, method = method, mu = mu, deg = deg, shape = shape}
-  return r.a, r.spin, r.across, r.rot, r.hop
+  return r.a, r.spin, r.across, r.rot, r.hop, r.friction, r.residual
 end
 local function discs(cells, method)
   local r = C.discs {cells = cells, method = method, offset = 0.2}
@@ -149,6 +149,18 @@ for _, c in ipairs(DIAG) do
   V.below(WIN .. ": no tipping, block rotation (rad) at 4 and 8 cells, both shapes", rot, 0.0175,
           "(1 degree)")
   V.below(WIN .. ": no hop, normal displacement / L at 4 and 8 cells, both shapes", hop, 0.01)
+  if mu > 0 then
+    -- the friction work booked against mu N times the distance slid, and
+    -- the energy budget (sim_residual) against the work of gravity
+    local fw, res = 0, 0
+    for i = 2, 3 do
+      fw = math.max(fw, math.abs(lin[i][6] - 1))
+      res = math.max(res, math.abs(lin[i][7]))
+    end
+    fw, res = math.max(fw, math.abs(gim[2][6] - 1)), math.max(res, math.abs(gim[2][7]))
+    V.below(WIN .. ": |friction work / (mu N d) - 1| at 8 and 16 cells, both shapes", fw, 0.05)
+    V.below(WIN .. ": |budget residual| / gravity's work at 8 and 16 cells", res, 0.02)
+  end
   V.info(WIN .. ": rotation (rad) at 16 cells, linear", lin[3][4])
   V.info(WIN .. ": hop / L at 16 cells, linear", lin[3][5])
   -- at 4 cells the window (9 cells) is wider than the block, and the

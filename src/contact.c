@@ -8,7 +8,8 @@
 **   n_r = (2 g_r - G) / |2 g_r - G|
 ** With two fields this is (g_A - g_B)/|.|, so n_B = -n_A exactly: both
 ** sides see one interface.  That is sim.normals = "mass", the default;
-** normals() below gives the others ("volume", "maxvolume", "plane").
+** normals() below gives the others ("volume", "maxvolume", "plane"), and
+** with sim.normal_window takes each from the shared nodes around.
 **
 ** The rule (after the grid momentum update, on q = p + dt f):
 **   v_cm = sum q_r / sum m_r (a driven body's velocity replaces it)
@@ -16,10 +17,12 @@
 ** Field r is in contact when it approaches (dn > 0: after this step's
 ** forces, compressive tractions included, it would move into the other
 ** material) and, with the separation check on, the surfaces touch
-** (reach.c).  Then the normal part of dp_r is removed and the tangential
-** part t is reduced by mu dn (Coulomb), or removed if |t| <= mu dn
-** (stick).  The corrections are made to sum to zero (mass-weighted
-** residual), so the node's total momentum is conserved to round-off;
+** (reach.c), or with sim.contact_gap = "step" would meet within the
+** step (closing() below, which also scales the normal part down).
+** Then the normal part of dp_r is removed and the tangential part t is
+** reduced by mu dn (Coulomb), or removed if |t| <= mu dn (stick).  The
+** corrections are made to sum to zero (mass-weighted residual), so the
+** node's total momentum is conserved to round-off;
 ** with two fields the residual is round-off itself.
 **
 ** What contact dissipates.  Over a step the nodal kinetic energy of a
@@ -48,33 +51,28 @@
 ** work, the friction work, and the bonds cut (a count) */
 #define CREC (DIM + 3)
 
-/* |a_sl|, and in u the sum of a over the other slots at node n */
-static double parts(const grid *g, double *const a[DIM], int32_t n,
-                    int32_t sl, double u[DIM], double *rest) {
-  double own = 0, r = 0;
-  int32_t q;
-  int d;
-  for (d = 0; d < DIM; d++) u[d] = 0;
-  for (q = g->head[n]; q >= 0; q = g->snext[q])
-    if (q != sl)
-      for (d = 0; d < DIM; d++) u[d] += a[d][q];
-  for (d = 0; d < DIM; d++) {
-    own += a[d][sl] * a[d][sl];
-    r += u[d] * u[d];
-  }
-  *rest = sqrt(r);
-  return sqrt(own);
-}
-
 /*
+** The window.  A node's support sees a body's surface over one or two
+** cells; where the surface is tilted to the grid the particles (seeded
+** on the grid's lattice) make it a staircase, and two bodies pressed
+** together interlock like teeth.  Each node's own estimate then turns
+** with the steps, and contact that removes the normal velocity on
+** turned normals holds a sliding body (measured: a block on a flat body
+** tilted 30 degrees does not slide with any per-node method).  So the
+** normal at node n is taken from the sums of every shared node within
+** sim.normal_window = R cells of n (a (2R+1)^2 patch): a smoother density
+** gradient, or a plane fitted to the particles of a wider window, which
+** sees the true face over several steps.  R = 0 is the node alone.
+**
 ** "plane": the plane that best separates field r's particles near the
 ** node from the others', by least squares.  With u_p = (x_i - x_p)/h and
 ** c_p = 1 for r's particles, -1 for the others', (n, b) minimize
-**   sum_p w_p (n . u_p + b - c_p)^2,   w_p = V_p S_ip
+**   sum_p w_p (n . u_p + b - c_p)^2,   w_p = V_p sum_j S_jp
 ** (a linear discriminant: it sees where each side's material lies, not
 ** how steeply its mass falls off, so a body's corner facing a flat face
 ** does not turn the face's normal).  The normal equations need only the
-** moments p2g gathered:
+** moments p2g gathered at each node j of the window, moved to node i
+** (u_i = u_j + (x_i - x_j)/h):
 **   [ sum w u u^T  sum w u ] [n]   [ sum c w u ]
 **   [ sum w u^T    sum w   ] [b] = [ sum c w   ]
 ** and n, pointing to where c grows away from r's material, is r's
@@ -84,20 +82,8 @@ static double parts(const grid *g, double *const a[DIM], int32_t n,
 ** (the particles all on one line through the node, say).
 */
 #define NP (DIM + 1)
-static int plane(const grid *g, int32_t n, int32_t sl, double v[DIM]) {
-  double A[NP][NP] = {{0}}, y[NP] = {0};
-  int32_t q;
+static int solve(double A[NP][NP], double y[NP], double v[DIM]) {
   int a, b, c;
-  for (q = g->head[n]; q >= 0; q = g->snext[q]) {
-    double sgn = q == sl ? 1.0 : -1.0;
-    for (a = 0; a < DIM; a++) {
-      for (b = a; b < DIM; b++) A[a][b] += g->sxx[grid_sym(a, b)][q];
-      A[a][DIM] += g->sx[a][q];
-      y[a] += sgn * g->sx[a][q];
-    }
-    A[DIM][DIM] += g->sw[q];
-    y[DIM] += sgn * g->sw[q];
-  }
   for (a = 0; a < NP; a++)
     for (b = 0; b < a; b++) A[a][b] = A[b][a];
   for (c = 0; c < NP; c++) {
@@ -123,63 +109,114 @@ static int plane(const grid *g, int32_t n, int32_t sl, double v[DIM]) {
   for (a = 0; a < DIM; a++) v[a] = y[a];
   return 1;
 }
-#undef NP
 
-/* Normals of the shared nodes [k0, k1): each node reads and writes only
-** its own slots, so parts cut anywhere give the same numbers.
-**   "mass", "volume": field r against the rest, (2 a_r - A) / |.| from
-**     its mass or volume gradient a_r (A their sum over the fields).
+/* node j's moments moved to the node dl (in cells) away, added into the
+** normal equations of field f's slot (upper triangle) */
+static void moments(const grid *g, int32_t j, int32_t f, const double dl[DIM],
+                    double A[NP][NP], double y[NP]) {
+  int32_t q;
+  int a, b;
+  for (q = g->head[j]; q >= 0; q = g->snext[q]) {
+    double sgn = g->sfield[q] == f ? 1.0 : -1.0, w = g->sw[q], m[DIM];
+    for (a = 0; a < DIM; a++) m[a] = g->sx[a][q] + dl[a] * w;
+    for (a = 0; a < DIM; a++) {
+      for (b = a; b < DIM; b++)
+        A[a][b] += g->sxx[grid_sym(a, b)][q] + dl[a] * g->sx[b][q] +
+                   dl[b] * g->sx[a][q] + dl[a] * dl[b] * w;
+      A[a][DIM] += m[a];
+      y[a] += sgn * m[a];
+    }
+    A[DIM][DIM] += w;
+    y[DIM] += sgn * w;
+  }
+}
+
+/* the window's sums for field f at node n: its gradient (own) and the
+** others' at the nodes where f has a slot (rest), or, with A, y, the
+** plane's normal equations over every shared node of the window */
+static void window(const grid *g, double *const a[DIM], int32_t n, int32_t f,
+                   int R, double own[DIM], double rest[DIM],
+                   double A[NP][NP], double y[NP]) {
+  int32_t ix = n % g->n[0], iy = n / g->n[0];
+  int bx, by, d;
+  for (d = 0; d < DIM; d++) own[d] = rest[d] = 0;
+#if DIM == 2
+  for (by = -R; by <= R; by++)
+    for (bx = -R; bx <= R; bx++) {
+      int jx = grid_wrap(g, 0, ix + bx), jy = grid_wrap(g, 1, iy + by);
+      int32_t j, q;
+      if (jx < 0 || jx >= g->n[0] || jy < 0 || jy >= g->n[1]) continue;
+      j = jx + g->n[0] * jy;
+      if (g->head[j] < 0) continue;
+      if (A) {
+        const double dl[DIM] = {-bx, -by};
+        moments(g, j, f, dl, A, y);
+        continue;
+      }
+      for (q = g->head[j]; q >= 0 && g->sfield[q] != f; q = g->snext[q]) {}
+      if (q < 0) continue;
+      for (q = g->head[j]; q >= 0; q = g->snext[q])
+        for (d = 0; d < DIM; d++) {
+          if (g->sfield[q] == f) own[d] += a[d][q];
+          else rest[d] += a[d][q];
+        }
+    }
+#else
+#error "contact normals: 3-D window not written yet"
+#endif
+}
+
+/* Normals of the shared nodes [k0, k1): each node reads the window's
+** sums and writes only its own slots, so parts cut anywhere give the
+** same numbers.  With own and rest field r's and the others' sums:
+**   "mass", "volume": (own - rest) / |.| of the mass or volume gradient.
 **   "maxvolume": the side with the larger volume gradient is the better
 **     sampled surface (the other reaches the node with a sliver of
 **     material, or from a stair-step's corner): its own direction is
-**     the normal, and the partner takes the opposite one.  With more
-**     fields, field r against the rest: r's own direction where
-**     |a_r| > |rest|, minus the rest's where it is smaller, and the
+**     the normal, and the partner takes the opposite one; the
 **     difference on an exact tie; so with two fields n_B = -n_A.
-**   "plane": plane() above, the volume gradients' difference where it
-**     has none. */
+**   "plane": the fitted plane, the volume gradients' difference where
+**     it has none. */
 static void normals(sim *s, size_t k0, size_t k1) {
   grid *g = &s->g;
   double *const *a = s->normals == NORMALS_MASS ? g->sg : g->sv;
   const int maxv = s->normals == NORMALS_MAXVOLUME;
   const int pl = s->normals == NORMALS_PLANE;
+  const int R = s->normal_window;
   size_t k;
   for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl;
-    double G[DIM] = {0};
-    int d;
-    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
-      for (d = 0; d < DIM; d++) G[d] += a[d][sl];
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
-      double v[DIM], len = 0;
+      double v[DIM], own[DIM], rest[DIM], len = 0, lo = 0, lr = 0;
+      int d;
+      window(g, a, n, g->sfield[sl], R, own, rest, NULL, NULL);
       for (d = 0; d < DIM; d++) {
-        v[d] = 2.0 * a[d][sl] - G[d];
+        v[d] = own[d] - rest[d];
         len += v[d] * v[d];
+        lo += own[d] * own[d];
+        lr += rest[d] * rest[d];
       }
       len = sqrt(len);
       if (pl) {
-        double u[DIM], l2 = 0;
-        if (plane(g, n, sl, u)) {
+        double A[NP][NP] = {{0}}, y[NP] = {0}, u[DIM], l2 = 0;
+        window(g, a, n, g->sfield[sl], R, own, rest, A, y);
+        if (solve(A, y, u)) {
           for (d = 0; d < DIM; d++) l2 += u[d] * u[d];
           if (l2 > 0) {
             for (d = 0; d < DIM; d++) v[d] = u[d];
             len = sqrt(l2);
           }
         }
-      } else if (maxv) {
-        double u[DIM], rest, own = parts(g, a, n, sl, u, &rest);
-        if (own > rest) {
-          for (d = 0; d < DIM; d++) v[d] = a[d][sl];
-          len = own;
-        } else if (rest > own) {
-          for (d = 0; d < DIM; d++) v[d] = -u[d];
-          len = rest;
-        }
+      } else if (maxv && lo != lr) {
+        const double *w = lo > lr ? own : rest, sg = lo > lr ? 1.0 : -1.0;
+        for (d = 0; d < DIM; d++) v[d] = sg * w[d];
+        len = sqrt(lo > lr ? lo : lr);
       }
       for (d = 0; d < DIM; d++) g->sn[d][sl] = len > 0 ? v[d] / len : 0.0;
     }
   }
 }
+#undef NP
 
 static void normals_part(void *arg, int t, int nparts) {
   sim *s = arg;
@@ -322,6 +359,31 @@ static void booked(sim *s, size_t k, double fric, int cuts, int rec) {
   }
 }
 
+/*
+** Detection by the gap at the step's end (sim.contact_gap = "step").
+** The surfaces are gap = -(e_r + e_o) apart along n_r (reach.c; < 0 when
+** they overlap), and close at w = (v_r - v_o) . n_r, the partner's
+** velocity taken relative to the reference (zero for a driven partner).
+** If they would not meet within the step (w dt <= gap) there is no
+** contact; if they would, only the part of the approach that overlaps
+** them is taken away, so that they end the step just touching: the
+** normal correction is scaled by 1 - gap / (w dt).  Overlapping surfaces
+** (gap <= 0) get the whole correction.  Returns that fraction.
+*/
+static double closing(const sim *s, int32_t sl, int32_t o, int odriven,
+                      const double vref[DIM], double *const smom[DIM],
+                      double dn, double gap) {
+  const grid *g = &s->g;
+  double w = dn / g->sm[sl];
+  int d;
+  if (!(gap > 0)) return 1;
+  if (!odriven && g->sm[o] > s->mcut)
+    for (d = 0; d < DIM; d++)
+      w -= (smom[d][o] / g->sm[o] - vref[d]) * g->sn[d][sl];
+  if (!(w * s->dt > gap)) return 0;
+  return 1 - gap / (w * s->dt);
+}
+
 /* the correction at shared node k; rec: record the driven body's force
 ** and work for contact_apply to add up in order (a threaded pass) */
 static void node(sim *s, size_t k0, double *const mom[DIM],
@@ -348,7 +410,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   } else
     for (d = 0; d < DIM; d++) vref[d] = mom[d][n] / M;
   for (k = 0; k < ns; k++) {
-    double dp[DIM], t[DIM], dn = 0, tt = 0, mr, mu, other = -1e300, mo = -1;
+    double dp[DIM], t[DIM], dn = 0, tt = 0, mr, mu, other = -1e300, mo = -1, fn;
     int32_t o = -1;
     int j;
     sl = slots[k];
@@ -386,13 +448,22 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       }
     }
     if (!(dn > 0)) continue;
-    if (s->gap_check && g->sext[sl] + other < 0) continue;
+    fn = 1;
+    if (s->gap_check) {
+      double gap = -(g->sext[sl] + other);
+      if (s->gap_step) {
+        fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);
+        if (!(fn > 0)) continue;
+      } else if (gap > 0)
+        continue;
+    }
     mu = sim_law(s, g->sfield[sl], g->sfield[o]);
     for (d = 0; d < DIM; d++) {
       t[d] = dp[d] - dn * g->sn[d][sl];
       tt += t[d] * t[d];
-      cc[k][d] = -dn * g->sn[d][sl];
+      cc[k][d] = -fn * dn * g->sn[d][sl];
     }
+    dn *= fn;
     tt = sqrt(tt);
     if (tt > mu * dn) { /* slides: friction mu dn against the slip */
       double r = mu * dn / tt;

@@ -22,6 +22,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->cfl = 0.25;
   s->t_end = 1.0;
   s->gap_check = 1;
+  s->normal_window = 0;
   s->bond_default = INFINITY;
   s->faff = -1;
   s->t_stop = INFINITY;

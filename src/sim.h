@@ -32,6 +32,8 @@ enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
 ** for both sides, or the least-squares plane between the particles */
 enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
                     NORMALS_PLANE };
+/* the widest window the normals may take (cells each way) */
+#define NORMAL_WINDOW_MAX 4
 #define NSIDES (2 * DIM)
 /* side index: 2 d for the low side of dimension d, 2 d + 1 for the high */
 
@@ -115,8 +117,10 @@ typedef struct sim {
   double bond_area;  /* bonded interface area in the last step (length in
                         2-D), each interface counted once */
   int gap_check;     /* contact only once material surfaces meet */
+  int gap_step;      /* ... judged at the step's end (contact.c closing) */
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
   int normals;       /* enum normals_kind: how contact normals are taken */
+  int normal_window; /* ... from the shared nodes within this many cells */
   double mcut;       /* nodal masses below this are empty */
   int sort_every;    /* steps between sorts by cell */
   size_t nremoved;   /* particles that left the domain */

@@ -1,0 +1,133 @@
+-- mvmpm.normals: the contact normals' cases with known answers, shared by
+-- tests/verify/normals.lua, tests/verify/two_disks.lua and
+-- studies/normals.lua.
+--   M.block: an elastic block (side L = 0.2, E = 200, nu = 0.3, rho = 1)
+--   sliding on a driven flat body 0.1 thick; reference a = g (sin th -
+--   mu cos th), no spin, no motion off the surface.
+--   M.discs: Sulsky's two elastic discs (E = 1000, nu = 0.3, rho = 1000,
+--   radius 0.2, velocities +-(0.1, 0.1)), the upper one offset across the
+--   approach; reference (frictionless): the impulse along the line of
+--   centres, so the relative velocity across it is kept, no spin, energy
+--   kept.
+-- A normals method is named "method/R" for normal_window = R ("method"
+-- alone: R = 0).
+local mvmpm = require "mvmpm"
+local M = {}
+
+-- "method/R" -> normals, normal_window
+function M.opts(method)
+  local m, w = method:match("^(%a+)/(%d+)$")
+  return m or method, tonumber(w) or 0
+end
+
+-- least-squares slope of v(t)
+local function slope(ts, vs)
+  local n, st, sv, stt, stv = #ts, 0, 0, 0, 0
+  for i = 1, n do
+    st, sv = st + ts[i], sv + vs[i]
+    stt, stv = stt + ts[i] ^ 2, stv + ts[i] * vs[i]
+  end
+  return (n * stv - st * sv) / (n * stt - st * st)
+end
+
+-- o: k (cells per block side), method, mu, deg (the slope and the block
+-- rotated by deg to the grid, gravity down; nil: the slope along the grid
+-- and gravity rotated by 30 degrees), shape ("linear"), gap ("touch").
+-- Returns {a (over the reference), spin (largest |omega| after the block
+-- settles, t > 0.1), across (largest speed across the surface over the
+-- speed along it at the end), rot (|spin integrated|, rad), hop (how far
+-- the centre moved off the surface, over L), friction (the friction work
+-- over mu m g cos th times the distance slid; g = 1), residual (the
+-- energy budget's residual over the work of gravity, m g sin th times the
+-- distance), cpu (os.clock seconds)}
+function M.block(o)
+  local L, T = 0.2, 0.4
+  local th = math.rad(o.deg or 30)
+  local meth, win = M.opts(o.method)
+  local rot0 = o.deg ~= nil
+  local S, N = {math.cos(th), -math.sin(th)}, {math.sin(th), math.cos(th)}
+  if not rot0 then S, N = {1, 0}, {0, 1} end
+  local P = rot0 and {0.05, 0.75} or {0.0, 0.4}
+  local function pt(a, b) return {P[1] + a * S[1] + b * N[1], P[2] + a * S[2] + b * N[2]} end
+  local sim = mvmpm.sim {
+    domain = {x = {0, 1}, y = {0, 1}}, cell = L / o.k, ppc = 2, sides = "free",
+    gravity = rot0 and {0, -1} or {math.sin(th), -math.cos(th)}, shape = o.shape or "linear",
+    t_end = T, normals = meth, normal_window = win, contact_gap = o.gap,
+    contact = {friction = o.mu}}
+  local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}
+  sim:body {name = "slope", material = m, driven = {0, 0},
+    shape = mvmpm.polygon {pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}}
+  local b = sim:body {name = "block", material = m,
+    shape = mvmpm.polygon {pt(0.1, 0), pt(0.1 + L, 0), pt(0.1 + L, L), pt(0.1, L)}}
+  local ts, vs, spin, across, last, rot, t0 = {}, {}, 0, 0, 0, 0, 0
+  local d0 = b:diag()
+  sim:every {steps = 1, fn = function(s)
+    local d = b:diag()
+    rot, t0 = rot + d.omega * (s.t - t0), s.t
+    if s.t < 0.1 then return end
+    ts[#ts + 1], vs[#vs + 1] = s.t, d.vx * S[1] + d.vy * S[2]
+    spin = math.max(spin, math.abs(d.omega))
+    across = math.max(across, math.abs(d.vx * N[1] + d.vy * N[2]))
+    last = vs[#vs]
+  end}
+  local c0 = os.clock()
+  sim:run()
+  local d1 = b:diag()
+  local ref = math.sin(th) - o.mu * math.cos(th)
+  local e, dist = sim:energy(), (d1.x - d0.x) * S[1] + (d1.y - d0.y) * S[2]
+  -- Coulomb: the friction work is mu times the normal force m g cos th
+  -- times the distance slid
+  local wref = o.mu * b:mass() * math.cos(th) * math.abs(dist)
+  return {a = slope(ts, vs) / ref, spin = spin,
+          friction = wref > 0 and e.dissipated / wref or 0,
+          residual = e.residual / math.max(b:mass() * math.abs(dist) * math.sin(th), 1e-300),
+          across = across / math.max(math.abs(last), 1e-30), rot = math.abs(rot),
+          hop = math.abs((d1.x - d0.x) * N[1] + (d1.y - d0.y) * N[2]) / L,
+          cpu = os.clock() - c0}
+end
+
+-- o: cells (across the unit square), method, offset (0: head on),
+-- shape ("linear"), gap ("touch"), threads.  Returns {kept (relative
+-- velocity across the closest approach's line of centres, after over
+-- before; 1 head on), spin (largest |omega| of either disc), spin_end,
+-- energy (kinetic + strain, after over before), total (sim:energy().total
+-- after over before), jt (the impulse on the upper disc across the
+-- instantaneous line of centres, summed over the steps, over the impulse
+-- along it), cpu, a, b (the discs' diag at the end)}
+function M.discs(o)
+  local off = (o.offset or 0) / math.sqrt(2)
+  local meth, win = M.opts(o.method)
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / o.cells, ppc = 2,
+    sides = "free", t_end = o.t_end or 3.0, shape = o.shape or "linear", normals = meth,
+    normal_window = win, contact_gap = o.gap, threads = o.threads}
+  local m = mvmpm.elastic {E = 1000, nu = 0.3, density = 1000}
+  local a = sim:body {name = "lower", material = m, velocity = {0.1, 0.1},
+    shape = mvmpm.disk {center = {0.2, 0.2}, radius = 0.2}}
+  local b = sim:body {name = "upper", material = m, velocity = {-0.1, -0.1},
+    shape = mvmpm.disk {center = {0.8 + off, 0.8 - off}, radius = 0.2}}
+  local e0 = sim:energy()
+  local a0, b0 = a:diag(), b:diag()
+  local dmin, nx, ny, spin, jn, jt, pv = math.huge, 0, 0, 0, 0, 0, {b0.vx, b0.vy}
+  sim:every {steps = 1, fn = function()
+    local da, db = a:diag(), b:diag()
+    local dx, dy = db.x - da.x, db.y - da.y
+    local d = math.sqrt(dx * dx + dy * dy)
+    local ix, iy = db.vx - pv[1], db.vy - pv[2]
+    jn, jt = jn + (ix * dx + iy * dy) / d, jt + (-ix * dy + iy * dx) / d
+    pv = {db.vx, db.vy}
+    if d < dmin then dmin, nx, ny = d, dx / d, dy / d end
+    spin = math.max(spin, math.abs(da.omega), math.abs(db.omega))
+  end}
+  local c0 = os.clock()
+  sim:run()
+  local cpu = os.clock() - c0
+  local a1, b1, e1 = a:diag(), b:diag(), sim:energy()
+  local function across(p, q) return (q.vx - p.vx) * -ny + (q.vy - p.vy) * nx end
+  return {kept = off ~= 0 and across(a1, b1) / across(a0, b0) or 1, spin = spin,
+          spin_end = math.max(math.abs(a1.omega), math.abs(b1.omega)),
+          energy = (e1.kinetic + e1.strain) / (e0.kinetic + e0.strain),
+          total = e1.total / e0.total, jt = jn ~= 0 and jt / jn or 0, cpu = cpu,
+          a = a1, b = b1}
+end
+
+return M

@@ -438,6 +438,7 @@ static int cmd_run(int argc, char **argv) {
   ls->ck_on_interrupt = 1;
   ls->progress = !o.quiet;
   if (o.threads) sim_set_threads(&ls->s, o.threads);
+  if (o.profile) par_account(1);
   if (o.profile && !(ls->s.prof = calloc(1, sizeof *ls->s.prof))) {
     fprintf(stderr, "%s: out of memory\n", progname);
     lua_close(L);

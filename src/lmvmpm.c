@@ -22,6 +22,7 @@
 #include "lauxlib.h"
 #include "lcheck.h"
 #include "lmvmpm.h"
+#include "par.h"
 #include "lsim.h"
 #include "lualib.h"
 #include "sandbox.h"
@@ -313,6 +314,21 @@ static int load(lua_State *L) {
   return 1;
 }
 
+/* mvmpm.cpu() -> thread, work, crit, own: this thread's CPU seconds and
+** the thread pools' accounting (par.h: all parts' CPU time, the longest
+** part of each job added up, the calling thread's time in jobs).  The
+** first call turns the accounting on; the sums count from then. */
+static int lcpu(lua_State *L) {
+  double w, c, o;
+  par_account(1);
+  par_cpu(&w, &c, &o);
+  lua_pushnumber(L, par_thread_cpu());
+  lua_pushnumber(L, w);
+  lua_pushnumber(L, c);
+  lua_pushnumber(L, o);
+  return 4;
+}
+
 /* mvmpm.clock() -> seconds on a monotonic wall clock, for timing runs
 ** (os.clock is the process's CPU time, not elapsed time) */
 static int lclock(lua_State *L) {
@@ -347,7 +363,7 @@ static int modindex(lua_State *L) {
 
 int luaopen_mvmpm(lua_State *L) {
   static const luaL_Reg fns[] = {{"sim", lsim_new}, {"params", params},
-                                 {"load", load}, {"clock", lclock},
+                                 {"load", load}, {"clock", lclock}, {"cpu", lcpu},
                                  {NULL, NULL}};
   int mod;
   luaL_newlib(L, fns);

@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "diag_contact.h"
 #include "diag_overlap.h"
 #include "lcheck.h"
 #include "lsim.h"
@@ -784,6 +785,36 @@ static int loverlap(lua_State *L) {
   return 4;
 }
 
+/* sim:contacts() -> {{a =, b =, force =, fx =, fy =, nodes =}, ...}: the
+** pairs of bodies pressing on each other now (diag_contact.h): ids
+** (1-based, a < b), the compressive normal force, the normal force on a
+** from b, and the shared nodes where they press */
+static int lcontacts(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  contact_pair *cp;
+  size_t n, k;
+  if (diag_contacts(&ls->s, &cp, &n)) return luaL_error(L, "%s", ls->s.err);
+  lua_createtable(L, (int)n, 0);
+  for (k = 0; k < n; k++) {
+    lua_createtable(L, 0, 6);
+    lua_pushinteger(L, cp[k].a + 1);
+    lua_setfield(L, -2, "a");
+    lua_pushinteger(L, cp[k].b + 1);
+    lua_setfield(L, -2, "b");
+    lua_pushnumber(L, cp[k].fn);
+    lua_setfield(L, -2, "force");
+    lua_pushnumber(L, cp[k].f[0]);
+    lua_setfield(L, -2, "fx");
+    lua_pushnumber(L, cp[k].f[1]);
+    lua_setfield(L, -2, "fy");
+    lua_pushinteger(L, cp[k].nodes);
+    lua_setfield(L, -2, "nodes");
+    lua_rawseti(L, -2, (lua_Integer)k + 1);
+  }
+  free(cp);
+  return 1;
+}
+
 static int lstable_dt(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   if (!ls->s.started) sim_begin(&ls->s);
@@ -890,7 +921,8 @@ void lsim_open(lua_State *L) {
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
       {"particles", lparticles}, {"stable_dt", lstable_dt},
       {"temperature", lsim_temperature}, {"render", lrender_sim},
-      {"wall_force", lwall_force}, {"overlap", loverlap}, {"state", lstate},
+      {"wall_force", lwall_force}, {"overlap", loverlap},
+      {"contacts", lcontacts}, {"state", lstate},
       {"settle", lsettle}, {"at_end", lat_end},
       {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);

@@ -43,7 +43,8 @@ static const cmdhelp helps[] = {
 "       (DIR: its newest), in its directory, with the same --set values\n"
 "--threads N  steps with N threads (default: the scene's sim{threads = N},\n"
 "       else $MVMPM_THREADS, else 1); the results are the same bit for bit\n"
-"--profile  prints the effects the step runs and the wall time per phase\n"
+"--profile  prints the effects the step runs and, per phase, the wall time,\n"
+"       the threads' CPU time and the time on idle cores\n"
 "--sandbox  the scene gets no io, os (but clock/time/date), debug, package,\n"
 "       dofile/loadfile or bytecode, and writes only inside DIR, following\n"
 "       no link there; its checkpoints restart sandboxed\n"
@@ -485,6 +486,7 @@ static int cmd_run(int argc, char **argv) {
   ls->ck_on_interrupt = 1;
   ls->progress = !o.quiet;
   if (o.threads) sim_set_threads(&ls->s, o.threads);
+  if (o.profile) par_account(1);
   if (o.profile && !(ls->s.prof = calloc(1, sizeof *ls->s.prof))) {
     fprintf(stderr, "%s: out of memory\n", progname);
     lua_close(L);

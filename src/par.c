@@ -28,6 +28,11 @@
 #include <time.h>
 #include "par.h"
 
+/* CPU accounting (par_account): on or off, and the sums; the parts of
+** the current job write their own entries of part[] */
+static int acct;
+static double acct_work, acct_crit, acct_own;
+
 /* how long a wait polls before it sleeps (nanoseconds) */
 #define PAR_SPIN_NS 50000
 
@@ -42,11 +47,27 @@ struct par {
   atomic_int pending;  /* workers still running the current job */
   par_fn fn;
   void *arg;
+  int acct;            /* this job is accounted: parts time themselves */
+  double part[PAR_MAX]; /* each part's thread CPU time (accounting) */
   pthread_mutex_t mu;
   pthread_cond_t wake, idle;
   pthread_t tid[PAR_MAX];
   struct worker w[PAR_MAX];
 };
+
+double par_thread_cpu(void) {
+  struct timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+void par_account(int on) { acct = on != 0; }
+
+void par_cpu(double *work, double *crit, double *own) {
+  *work = acct_work;
+  *crit = acct_crit;
+  *own = acct_own;
+}
 
 static long long now_ns(void) {
   struct timespec ts;
@@ -77,7 +98,12 @@ static void *worker_main(void *a) {
   par *p = w->p;
   unsigned long seen = 0;
   while ((seen = next_job(p, seen)) != 0) {
-    p->fn(p->arg, w->t, p->n);
+    if (p->acct) {
+      double c0 = par_thread_cpu();
+      p->fn(p->arg, w->t, p->n);
+      p->part[w->t] = par_thread_cpu() - c0;
+    } else
+      p->fn(p->arg, w->t, p->n);
     if (atomic_fetch_sub_explicit(&p->pending, 1, memory_order_acq_rel) == 1) {
       pthread_mutex_lock(&p->mu); /* the last part: the caller may sleep */
       pthread_cond_signal(&p->idle);
@@ -137,20 +163,22 @@ void par_free(par *p) {
 
 int par_threads(const par *p) { return p ? p->n : 1; }
 
-void par_run(par *p, par_fn fn, void *arg) {
-  long long t0;
-  if (!p || p->n == 1) { fn(arg, 0, 1); return; }
-  /* every worker has finished the last job (pending 0, seen with an
-  ** acquire): none reads these fields now */
-  p->fn = fn;
-  p->arg = arg;
-  atomic_store_explicit(&p->pending, p->n - 1, memory_order_relaxed);
-  pthread_mutex_lock(&p->mu);
-  atomic_fetch_add_explicit(&p->gen, 1, memory_order_release);
-  pthread_cond_broadcast(&p->wake);
-  pthread_mutex_unlock(&p->mu);
-  fn(arg, 0, p->n);
-  t0 = now_ns();
+/* the job's sums, after its parts (accounting on) */
+static void account(par *p, double c0) {
+  double most = p->part[0], all = 0;
+  int t;
+  for (t = 0; t < p->n; t++) {
+    all += p->part[t];
+    if (p->part[t] > most) most = p->part[t];
+  }
+  acct_work += all;
+  acct_crit += most;
+  acct_own += par_thread_cpu() - c0;
+}
+
+/* the caller's wait for the workers' parts */
+static void wait_parts(par *p) {
+  long long t0 = now_ns();
   do {
     if (atomic_load_explicit(&p->pending, memory_order_acquire) == 0) return;
     sched_yield();
@@ -159,4 +187,32 @@ void par_run(par *p, par_fn fn, void *arg) {
   while (atomic_load_explicit(&p->pending, memory_order_acquire) > 0)
     pthread_cond_wait(&p->idle, &p->mu);
   pthread_mutex_unlock(&p->mu);
+}
+
+void par_run(par *p, par_fn fn, void *arg) {
+  double c0 = acct ? par_thread_cpu() : 0;
+  if (!p || p->n == 1) {
+    fn(arg, 0, 1);
+    if (acct) {
+      double c = par_thread_cpu() - c0;
+      acct_work += c;
+      acct_crit += c;
+      acct_own += c;
+    }
+    return;
+  }
+  /* every worker has finished the last job (pending 0, seen with an
+  ** acquire): none reads these fields now */
+  p->fn = fn;
+  p->arg = arg;
+  p->acct = acct;
+  atomic_store_explicit(&p->pending, p->n - 1, memory_order_relaxed);
+  pthread_mutex_lock(&p->mu);
+  atomic_fetch_add_explicit(&p->gen, 1, memory_order_release);
+  pthread_cond_broadcast(&p->wake);
+  pthread_mutex_unlock(&p->mu);
+  fn(arg, 0, p->n);
+  if (acct) p->part[0] = par_thread_cpu() - c0;
+  wait_parts(p);
+  if (acct) account(p, c0);
 }

@@ -36,6 +36,19 @@ int par_threads(const par *p);
 ** returns when all are done (a barrier: their writes are visible) */
 void par_run(par *p, par_fn fn, void *arg);
 
+/* CPU accounting, for the profiler (off by default; one test per job
+** when off).  With it on, every job measures each part's thread CPU time
+** and adds up, over all pools of the process: work, the CPU time of all
+** parts; crit, the longest part of each job (what the job takes on idle
+** cores); own, the CPU time the calling thread spent in the job (its
+** part and its wait).  A thread's CPU time does not count the time it
+** was descheduled, so on a shared machine these say what the code costs
+** where the wall clock says what the neighbours did. */
+void par_account(int on);
+void par_cpu(double *work, double *crit, double *own);
+/* the calling thread's CPU time (seconds) */
+double par_thread_cpu(void);
+
 /* the chunks of n indices */
 static inline size_t par_nchunks(size_t n) {
   return (n + PAR_CHUNK - 1) / PAR_CHUNK;

@@ -69,13 +69,23 @@ void prof_effects(FILE *f, const sim *s) {
 
 void prof_report(FILE *f, const sim *s) {
   const sim_prof *p = s->prof;
-  double total = 0;
+  double total = 0, cpu = 0, crit = 0;
   int k;
   if (!p) return;
-  for (k = 0; k < PROF_N; k++) total += p->t[k];
+  for (k = 0; k < PROF_N; k++) {
+    total += p->t[k];
+    cpu += p->cpu[k];
+    crit += p->crit[k];
+  }
   fprintf(f, "time per phase (%ld steps, %.3f s, %.3g ms per step):\n",
           p->steps, total, p->steps ? 1e3 * total / p->steps : 0.0);
+  fprintf(f, "  %-32s %9s %7s %9s %9s\n", "", "wall", "share", "CPU",
+          "idle cores");
   for (k = 0; k < PROF_N; k++)
-    fprintf(f, "  %-32s %9.3f s %6.1f %%\n", prof_names[k], p->t[k],
-            total > 0 ? 100 * p->t[k] / total : 0.0);
+    fprintf(f, "  %-32s %9.3f s %6.1f %% %9.3f %9.3f\n", prof_names[k], p->t[k],
+            total > 0 ? 100 * p->t[k] / total : 0.0, p->cpu[k], p->crit[k]);
+  fprintf(f, "  %-32s %9.3f s %8s %9.3f %9.3f\n", "all", total, "", cpu, crit);
+  fprintf(f, "(CPU: the threads' CPU time in the phase; idle cores: the serial "
+             "code plus each threaded job's longest part, what the phase "
+             "takes with nothing else running)\n");
 }

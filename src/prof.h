@@ -9,6 +9,7 @@
 
 #include <stdio.h>
 #include <time.h>
+#include "par.h"
 
 enum prof_phase {
   PROF_P2G,      /* grid reset, shared-node marking, particles to grid */
@@ -24,9 +25,17 @@ enum prof_phase {
   PROF_N
 };
 
+/* Besides the wall time, per phase the CPU time the threads spent in it
+** (cpu) and the time it would take on idle cores (crit: the serial code
+** plus, for each threaded job, its longest part), from the pool's
+** accounting (par_account) and the calling thread's CPU clock.  The
+** ratio of a one-thread run's crit to a two-thread run's is the speed-up
+** the code allows, whatever else the machine runs. */
 typedef struct sim_prof {
   double t[PROF_N]; /* seconds per phase */
+  double cpu[PROF_N], crit[PROF_N];
   double last;      /* clock at the last mark */
+  double tc, work, cr, own; /* the CPU clocks at the last mark */
   long steps;
 } sim_prof;
 
@@ -45,14 +54,26 @@ static inline double prof_clock(void) {
 }
 /* start timing from now */
 static inline void prof_start(struct sim_prof *p) {
-  if (p) p->last = prof_clock();
+  if (p) {
+    p->last = prof_clock();
+    p->tc = par_thread_cpu();
+    par_cpu(&p->work, &p->cr, &p->own);
+  }
 }
 /* the time since the last mark was spent in phase k */
 static inline void prof_mark(struct sim_prof *p, int k) {
   if (p) {
-    double now = prof_clock();
+    double now = prof_clock(), tc = par_thread_cpu(), w, c, o, serial;
+    par_cpu(&w, &c, &o);
+    serial = (tc - p->tc) - (o - p->own);
     p->t[k] += now - p->last;
+    p->cpu[k] += serial + (w - p->work);
+    p->crit[k] += serial + (c - p->cr);
     p->last = now;
+    p->tc = tc;
+    p->work = w;
+    p->cr = c;
+    p->own = o;
   }
 }
 

@@ -433,7 +433,12 @@ static void housekeeping(sim *s) {
     s->nremoved += ps->n - particles_compact(ps, keep);
     s->nout = 0;
   }
-  if (s->sort_every > 0 && s->step % s->sort_every == 0) {
+  /* also after the first step: bodies are seeded one after the other,
+  ** so until the first sort each body's particles span every node row,
+  ** and the scatter plan (bands.h) of two bodies side by side gives one
+  ** part every row in pass 1 and the other every row in pass 2: the
+  ** threads took turns for the first sort_every steps */
+  if (s->sort_every > 0 && (s->step % s->sort_every == 0 || s->step == 1)) {
     size_t ncell = 1;
     int d;
     for (d = 0; d < DIM; d++) ncell *= (size_t)s->g.cells[d];

@@ -23,6 +23,7 @@
 -- attached cylinders are driven bodies with the velocity of their side.
 -- Average shear strain: strain(t) = (integral of v_right - v_left) / L.
 local mvmpm = require "mvmpm"
+local chain = require "mvmpm.chain"
 local M = {}
 
 M.L = 4
@@ -236,6 +237,15 @@ function M.monitor(sim, P, bodies)
     for _, b in ipairs(bodies.attached[side]) do m_att = m_att + b:mass() end
   end
   local V = P.rate * L / 2
+  -- force chains: from the left side (its wall and attached cylinders)
+  -- to the right, through grains (the binder, one body touching
+  -- everything, is no link); the sides are vertices of their own
+  local lset, rset, skip = {}, {}, {}
+  for _, b in ipairs(bodies.attached.left) do lset[b.id] = true end
+  for _, b in ipairs(bodies.attached.right) do rset[b.id] = true end
+  lset[-1], rset[-2] = true, true
+  if bodies.binder then skip[bodies.binder.id] = true end
+  local hist = {}             -- per sample: work, deformation (for the share)
   local next_sample, next_picture = P.sample, 0
   local from = M.strain_at(P, P.t_ramp)
   mon.ramp_strain = from
@@ -317,6 +327,33 @@ function M.monitor(sim, P, bodies)
       cent[k] = {x, y}
     end
     omega_prev, t_prev = om, s.t
+    -- the strongest force chain across the cell, and the share of the
+    -- work into the material that went into deforming the grains (their
+    -- strain energy and plastic work) over the last LOCK_WINDOW of strain
+    local con = s:contacts()
+    -- a free grain within a cell of a side (its centroid and seeded
+    -- radius) presses on it with at most the side's own normal force
+    local wl, wr = math.abs((s:wall_force("left"))), math.abs((s:wall_force("right")))
+    for k, gr in ipairs(free) do
+      if cent[k][1] - gr.r < s.cell and wl > 0 then
+        con[#con + 1] = {a = -1, b = gr.body.id, force = wl}
+      end
+      if cent[k][1] + gr.r > L - s.cell and wr > 0 then
+        con[#con + 1] = {a = -2, b = gr.body.id, force = wr}
+      end
+    end
+    local ch = chain.strongest(con, lset, rset, {skip = skip})
+    -- pairs pressing, binder aside, and of those the pairs of free grains
+    local isfree, npress, ngg = {}, 0, 0
+    for _, gr in ipairs(free) do isfree[gr.body.id] = true end
+    for _, c in ipairs(con) do
+      if not skip[c.a] and not skip[c.b] then
+        npress = npress + 1
+        if isfree[c.a] and isfree[c.b] then ngg = ngg + 1 end
+      end
+    end
+    local gstrain = 0
+    for _, gr in ipairs(free) do gstrain = gstrain + gr.body:diag().strain end
     local rot = 0
     for k = 1, #free do rot = rot + math.abs(mon.rotation[k]) end
     rot = rot / #free
@@ -339,7 +376,23 @@ function M.monitor(sim, P, bodies)
       bonded_fraction = bonded0 and bonded0 > 0 and e.bonded_area / bonded0 or 0,
       jmin = e.jmin, overlap = n_ov, overlap_depth = depth,
       py_error = dpy / scale, narrowest_gap = narrowest(cent),
+      chain_force = ch and ch.force or 0, chain_grains = ch and #ch.path - 2 or 0,
+      pressing = npress, grain_grain = ngg,
+      grain_strain = gstrain,
     }
+    -- the share over the last LOCK_WINDOW of strain, where the work done
+    -- in it is at least a tenth of the run's mean over such a window
+    -- (else 0: nothing is being done to share)
+    hist[#hist + 1] = {g = g, w = work, d = gstrain + e.plastic}
+    local j = #hist
+    while j > 1 and hist[j - 1].g > g - M.LOCK_WINDOW - 1e-12 do j = j - 1 end
+    if j > 1 then j = j - 1 end
+    local dw = work - hist[j].w
+    row.deform_share = 0
+    if j < #hist and g > 0 and dw > 0.1 * M.LOCK_WINDOW * work / g then
+      row.deform_share = (hist[#hist].d - hist[j].d) / dw
+    end
+    row.deformation = gstrain + e.plastic
     for k = 1, #free do row["rot" .. k] = mon.rotation[k] end
     mon.rows[#mon.rows + 1] = row
     mon.strain[#mon.strain + 1], mon.force[#mon.force + 1] = g, force
@@ -416,10 +469,50 @@ function M.plastic_strain(mon)
   return n > 0 and sum / n or 0
 end
 
+-- Locking as force chains: past the ramp, the samples where a chain of
+-- pressing bodies spans the cell from one side to the other (chain_force
+-- > 0), grouped into runs of consecutive samples; and the share of the
+-- work into the material that went into deforming the grains (their
+-- strain energy and plastic work), in those samples and in the others.
+function M.chains(mon)
+  local runs, cur, n, nch, fmax = {}, nil, 0, 0, 0
+  local dl, wl, du, wu = 0, 0, 0, 0
+  local rows = mon.rows
+  for k, r in ipairs(rows) do
+    if r.strain >= mon.ramp_strain then
+      n = n + 1
+      local dd = k > 1 and r.deformation - rows[k - 1].deformation or 0
+      local dw = k > 1 and r.work - rows[k - 1].work or 0
+      if r.chain_force > 0 then
+        nch = nch + 1
+        dl, wl = dl + dd, wl + dw
+        if r.chain_force > fmax then fmax = r.chain_force end
+        if not cur then
+          cur = {strain = r.strain, peak = 0, grains = 0}
+          runs[#runs + 1] = cur
+        end
+        cur.end_strain = r.strain
+        if r.chain_force > cur.peak then
+          cur.peak, cur.peak_strain, cur.grains = r.chain_force, r.strain, r.chain_grains
+        end
+      else
+        cur = nil
+        du, wu = du + dd, wu + dw
+      end
+    end
+  end
+  local last = rows[#rows]
+  return {runs = runs, fraction = n > 0 and nch / n or 0, max_force = fmax,
+          share_chain = wl > 0 and dl / wl or 0, share_free = wu > 0 and du / wu or 0,
+          share = last.work > 0 and last.deformation / last.work or 0}
+end
+
 -- summary figures of a monitor (for tests and reports)
 function M.summary(mon)
   local r = mon.rows[#mon.rows]
   mon.events = M.locking(mon.strain, mon.force, mon.ramp_strain)
+  local ch = M.chains(mon)
+  mon.chain_runs = ch.runs
   local fsum, n = 0, 0
   for k, g in ipairs(mon.strain) do
     if g >= mon.ramp_strain then fsum, n = fsum + mon.force[k], n + 1 end
@@ -432,6 +525,9 @@ function M.summary(mon)
     max_depth = mon.max_depth, jmin = mon.jmin, max_py_error = mon.max_py_error,
     boundary_work = r.boundary_work, residual = r.residual,
     min_gap = mon.min_gap, mean_plastic_strain = M.plastic_strain(mon),
+    chain_fraction = ch.fraction, chain_runs = #ch.runs, chain_max_force = ch.max_force,
+    deform_share = ch.share, deform_share_chain = ch.share_chain,
+    deform_share_free = ch.share_free,
   }
 end
 
@@ -443,11 +539,14 @@ function M.report(mon, dir)
   local header = {"t", "strain", "force", "normal", "f_left", "f_right", "boundary_work",
                   "work", "kinetic", "kinetic_free", "stored", "friction", "plastic", "viscous", "residual",
                   "mean_abs_rotation", "bonded_fraction", "jmin", "overlap",
-                  "overlap_depth", "py_error", "narrowest_gap"}
+                  "overlap_depth", "py_error", "narrowest_gap", "chain_force", "chain_grains",
+                  "pressing", "grain_grain", "grain_strain", "deformation", "deform_share"}
   for k = 1, #mon.bodies.free do header[#header + 1] = "rot" .. k end
   csv_write(dir .. "/shear.csv", header, mon.rows)
   csv_write(dir .. "/locking.csv", {"strain", "peak_strain", "end_strain", "base", "peak", "mean"},
             mon.events)
+  csv_write(dir .. "/chains.csv", {"strain", "end_strain", "peak_strain", "peak", "grains"},
+            mon.chain_runs)
   local col = function(name)
     local t = {}
     for k, r in ipairs(mon.rows) do t[k] = r[name] end
@@ -457,10 +556,19 @@ function M.report(mon, dir)
   for k, ev in ipairs(mon.events) do ex[k], ey[k] = ev.peak_strain, ev.peak end
   local series = {{x = mon.strain, y = mon.force, label = "shear force (F_right - F_left)/2"},
                   {x = mon.strain, y = col("normal"), label = "normal force on the sides"}}
-  if #ex > 0 then series[#series + 1] = {x = ex, y = ey, style = "points", label = "locking events"} end
+  if #ex > 0 then series[#series + 1] = {x = ex, y = ey, style = "points", label = "force-rise events"} end
+  series[#series + 1] = {x = mon.strain, y = col("chain_force"),
+                         label = "strongest spanning force chain (0: none)"}
   mvmpm.plot {file = dir .. "/force_strain.png", xlabel = "average shear strain",
               ylabel = "force per unit depth", title = "Shear force and locking events",
               series = series}
+  local locked = {}
+  for k, r in ipairs(mon.rows) do locked[k] = r.chain_force > 0 and 1 or 0 end
+  mvmpm.plot {file = dir .. "/deform_share.png", xlabel = "average shear strain",
+              ylabel = "share", title = "Work into grain deformation, and spanning chains",
+              series = {{x = mon.strain, y = col("deform_share"),
+                         label = "(strain + plastic of the grains) / work, over 2 % strain"},
+                        {x = mon.strain, y = locked, label = "a chain spans the cell (1)"}}}
   local rs = {}
   for k = 1, #mon.bodies.free do
     rs[k] = {x = mon.strain, y = col("rot" .. k), label = mon.bodies.free[k].body.name}

@@ -18,7 +18,7 @@ function M.run(o)
   local sim = mvmpm.sim {
     domain = {x = {0, 4}, y = {0, 1.5}}, cell = 1 / o.cells, ppc = o.ppc or 2,
     shape = o.shape, transfer = o.transfer, flip = o.flip, update = o.update,
-    cfl = o.cfl or 0.25, t_end = T, gravity = {g * math.sin(th), -g * math.cos(th)},
+    cfl = o.cfl or 0.25, wall_contact = o.wall_contact, wall_remap = o.wall_remap, t_end = T, gravity = {g * math.sin(th), -g * math.cos(th)},
     sides = {left = "periodic", right = "periodic",
              bottom = {"wall", friction = o.mu}, top = "wall"},
   }

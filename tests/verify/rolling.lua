@@ -107,6 +107,14 @@ for _, shape in ipairs {"linear", "gimp"} do
   end
 end
 
+V.case "the patch rule is deterministic: 1 and 2 threads give the same bits"
+do
+  local a = I.run {cells = 8, shape = "gimp", deg = 25, mu = 0.5, wall_contact = "patch", threads = 1}
+  local b = I.run {cells = 8, shape = "gimp", deg = 25, mu = 0.5, wall_contact = "patch", threads = 2}
+  V.holds("rolling a, spin and residual equal at 1 and 2 threads",
+          a.a == b.a and a.alpha == b.alpha and a.e.residual == b.e.residual, a.a - b.a)
+end
+
 V.case "the node rule, for comparison (16 cells, linear hats)"
 do
   local s = incline(16, "linear", 30, 0.1, {wall = "node"})

@@ -11,6 +11,10 @@
 ** work c.v_w on the material, and dissipates minus its work on the
 ** node's mean velocity over the step in the wall's frame (contact.c).
 **
+** That is the node rule; the patch rule (below) gives all the nodes of a
+** contact patch one velocity change, so that friction's torque reaches a
+** round body (rolling, spin-up).
+**
 ** A driven body's field is given its prescribed velocity at every node
 ** it owns alone; at shared nodes contact.c does it.  The impulse needed
 ** is work done by the drive.
@@ -104,19 +108,22 @@ static int col_acted(const sim *s, int k, int j, int first, int last) {
   return 0;
 }
 
-/* The patch rule.  A run of consecutive wall columns where material
-** touches the wall (the separation check) is one contact patch; per
-** velocity field the wall removes the approach of the patch's mean
+/* The patch rule (sim.wall_contact = "patch").  A run of consecutive
+** wall columns with material on the wall lines is one patch: the body's
+** whole near-wall band, whose mass follows the body's shape and not the
+** orientation of its particle lattice.  It is in contact once the
+** material reaches the wall somewhere in it (the separation check).  Per
+** velocity field the wall removes the approach of the patch's total
 ** momentum and Coulomb-limits its tangential part, as for one node, and
-** gives every node of the patch the same velocity change.  The impulse
-** on each node is then its mass times that change, so the normal impulse
-** acts through the patch's mass centre: a round body resting on its
-** contact point feels no torque from the normal force, and the friction
-** impulse mu N acts at the wall line, its arm the body's reach to the
-** wall (mu N R for a disc).  The node rule instead stops every node that
-** approaches: a spinning round body's nodes on one side of the contact
-** point move into the wall (the material does, the surface does not), and
-** stopping them alone is a torque against the spin. */
+** gives every node of the patch the same velocity change, so the impulse
+** on each node is its mass times that change: the normal impulse acts
+** through the patch's mass centre (a round body feels no torque from
+** it), and the friction impulse mu N at the wall line (arm: the body's
+** reach to the wall, R for a disc).  The node rule instead stops each
+** node that approaches: a spinning round body's nodes on one side of its
+** contact point move into the wall (the material does, the surface does
+** not), and stopping them alone is a torque against the spin, with the
+** arm of the flat of the lowest particle row. */
 
 /* node n of column j on line `line` of side k */
 static int32_t wall_nodeid(const grid *g, int d, int line, int j) {
@@ -220,7 +227,7 @@ static void patch_field(sim *s, int k, int j0, int len, int first, int last,
   s->e.boundary += w;
 }
 
-/* the columns of side k where material touches the wall */
+/* whether column j of side k has material on the wall lines */
 static int patch_touch(const sim *s, int k, int j, int first, int last) {
   const grid *g = &s->g;
   int d = k / 2, line;

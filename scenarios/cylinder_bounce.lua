@@ -19,6 +19,7 @@ local P = mvmpm.params {
   transfer = "flip",   -- or "apic" (with shape gimp or bspline2), "xpic"
   xpic = 2,            -- XPIC's order (2 or 3)
   separation = true,   -- contact only once surfaces meet
+  wall_contact = "node", -- or "patch": the wall acts per contact patch
 }
 
 local h = 1 / P.cells
@@ -35,6 +36,7 @@ local sim = mvmpm.sim {
   t_end = P.t_end,
   sides = {"wall", friction = P.friction},
   contact = {separation = P.separation},
+  wall_contact = P.wall_contact,
 }
 
 local disc = mvmpm.elastic {K = 1, G = 0.5, density = 1, name = "disc"}

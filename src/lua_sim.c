@@ -208,12 +208,14 @@ int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
-      "wall_remap", "normals", "normal_window", "contact_gap", "xpic", NULL};
+      "wall_remap", "wall_contact", "normals", "normal_window", "contact_gap",
+      "xpic", NULL};
   static const char *const updates[] = {"usl", "musl", NULL};
   static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   static const char *const gapopt[] = {"touch", "step", NULL};
+  static const char *const wallopt[] = {"node", "patch", NULL};
   static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
                                              "plane", NULL};
   const char *what = "sim";
@@ -364,6 +366,7 @@ int lsim_new(lua_State *L) {
                                     1, PAR_MAX, CHK_INT));
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
     s->wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
+    s->wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
     s->normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
     s->gap_step = chk_option(L, 1, what, "contact_gap", s->gap_step, gapopt);
     s->normal_window = (int)chk_num(L, 1, what, "normal_window", s->normal_window,

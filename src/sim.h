@@ -24,6 +24,8 @@ enum update_kind { UPDATE_USL, UPDATE_MUSL };
 /* MUSL's remap at the walls (boundary_remap): auto holds them with
 ** gravity on */
 enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
+/* how a wall acts on the nodes where material touches it (boundary.c) */
+enum wall_rule { WALL_NODE, WALL_PATCH };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
@@ -119,6 +121,7 @@ typedef struct sim {
   int gap_check;     /* contact only once material surfaces meet */
   int gap_step;      /* ... judged at the step's end (contact.c closing) */
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
+  int wall_rule;     /* enum wall_rule: node by node or per contact patch */
   int normals;       /* enum normals_kind: how contact normals are taken */
   int normal_window; /* ... from the shared nodes within this many cells */
   double mcut;       /* nodal masses below this are empty */

@@ -1,4 +1,5 @@
--- Study: the frictional bouncing cylinder (mu = 0.1), first impact.
+-- Study: the frictional bouncing cylinder (mu = 0.1), first impact, the
+-- walls acting per contact patch (wall_contact = "patch").
 -- Reference: a rigid disc hitting a wall with restitution e (the one the
 -- run measures: the elastic disc keeps some energy as vibration) takes a
 -- Coulomb impulse mu (1 + e) m v_n while it slides (it slides throughout
@@ -28,7 +29,7 @@ local case = {
   run = function(s, clock)
     local sim = mvmpm.load("scenarios/cylinder_bounce.lua",
       {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer, flip = s.flip,
-       update = s.update, cfl = s.cfl, friction = mu, t_end = 16})
+       update = s.update, cfl = s.cfl, friction = mu, t_end = 16, wall_contact = "patch"})
     local disc = sim:bodies()[1]
     local e0 = sim:energy().total
     local sum, n, vx = 0, 0, nil

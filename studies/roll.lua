@@ -1,5 +1,6 @@
 -- Study: a disc on an incline, the incline being the floor wall of a box
--- with gravity rotated by theta (g = 1), periodic along the incline.  An
+-- with gravity rotated by theta (g = 1), periodic along the incline, the
+-- wall acting per contact patch (wall_contact = "patch").  An
 -- elastic disc (K = 100, G = 50, density 1, R = 0.5: sqrt(g R) / c_L =
 -- 0.05) starts at rest touching the floor.  Two regimes:
 --
@@ -21,10 +22,10 @@ local I = require "mvmpm.incline"
 local g, R, T = I.g, I.R, I.T
 
 -- one regime at settings s: slopes of v and omega after the settling
-local function incline(s, clock, deg, mu)
+local function incline(s, clock, deg, mu, slab)
   local r = I.run {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer,
                    flip = s.flip, update = s.update, cfl = s.cfl, deg = deg, mu = mu,
-                   run = clock.run}
+                   wall_contact = "patch", slab = slab, run = clock.run}
   return r.a, r.alpha, r.hop, r.th
 end
 

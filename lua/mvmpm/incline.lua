@@ -7,22 +7,34 @@
 -- is the settling).  Shared by studies/roll.lua and
 -- tests/verify/rolling.lua.
 local mvmpm = require "mvmpm"
-local M = {g = 1, R = 0.5, T = 2}
+local M = {g = 1, R = 0.5, T = 2, H = 0.25}
 
 -- o: cells, deg, mu, and optionally ppc (2), shape, transfer, flip,
--- update, cfl (0.25), w0 (initial spin), run (function(sim, t), default
--- sim:run).  Returns {a, alpha, hop, e (sim:energy()), th, wmin, wmax}.
+-- update, cfl (0.25), wall_contact, threads, slab (nil: the floor wall is the
+-- incline; "driven" or "elastic": a slab of thickness H is), w0 (initial
+-- spin), run (function(sim, t), default sim:run).  Returns {a, alpha, hop, e (sim:energy()), th, wmin, wmax}.
 function M.run(o)
   local g, R, T = M.g, M.R, M.T
   local th = math.rad(o.deg)
+  -- with a slab, the incline is the slab's top face at y = H (a driven,
+  -- i.e. rigid and fixed, body, or an elastic one stuck to the floor);
+  -- friction is then the contact law between the disc and the slab
+  local H = o.slab and M.H or 0
   local sim = mvmpm.sim {
-    domain = {x = {0, 4}, y = {0, 1.5}}, cell = 1 / o.cells, ppc = o.ppc or 2,
+    domain = {x = {0, 4}, y = {0, 1.5 + H}}, cell = 1 / o.cells, ppc = o.ppc or 2,
     shape = o.shape, transfer = o.transfer, flip = o.flip, update = o.update,
-    cfl = o.cfl or 0.25, t_end = T, gravity = {g * math.sin(th), -g * math.cos(th)},
+    cfl = o.cfl or 0.25, wall_contact = o.wall_contact, threads = o.threads, t_end = T,
+    gravity = {g * math.sin(th), -g * math.cos(th)},
     sides = {left = "periodic", right = "periodic",
-             bottom = {"wall", friction = o.mu}, top = "wall"},
+             bottom = {"wall", friction = o.slab and "stick" or o.mu}, top = "wall"},
+    contact = o.slab and {friction = o.mu} or nil,
   }
-  local disc = sim:body {shape = mvmpm.disk {center = {1, R}, radius = R},
+  if o.slab then
+    sim:body {name = "slab", shape = mvmpm.rect {lo = {0, 0}, hi = {4, H}},
+              material = mvmpm.elastic {K = 1000, G = 500, density = 1},
+              driven = o.slab == "driven" and {0, 0} or nil}
+  end
+  local disc = sim:body {shape = mvmpm.disk {center = {1, H + R}, radius = R},
                          material = mvmpm.elastic {K = 100, G = 50, density = 1},
                          angular_velocity = o.w0}
   local run = o.run or function(s, t) s:run(t) end
@@ -31,7 +43,7 @@ function M.run(o)
     run(sim, T * k / n)
     local d = disc:diag()
     ts[k], vs[k], ws[k] = sim.t, d.vx, -d.omega
-    hop = math.max(hop, d.y - R)
+    hop = math.max(hop, d.y - H - R)
     wmin, wmax = math.min(wmin, -d.omega), math.max(wmax, -d.omega)
   end
   local function slope(y)

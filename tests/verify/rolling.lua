@@ -1,31 +1,34 @@
 -- Contact: rolling and spin-up.  An elastic disc (R = 0.5, K = 100,
 -- G = 50, density 1) on an incline, the incline being the floor wall with
 -- gravity rotated by theta (g = 1), periodic along it, at 8, 16 and 32
--- cells per diameter (linear hats, FLIP, MUSL, 2 x 2 particles per cell).
+-- cells per diameter (FLIP, MUSL, 2 x 2 particles per cell), with linear
+-- hats and with GIMP, the walls acting per contact patch
+-- (wall_contact = "patch", docs/algorithm.md §9):
 --   sliding (theta 30 deg, mu 0.1 < tan(theta)/3):
 --     a = g (sin - mu cos),  R alpha = 2 mu g cos
 --   rolling (theta 25 deg, mu 0.5 >= tan(theta)/3):
 --     a = (2/3) g sin,  alpha = a / R
 -- Slopes of the centroid velocity and of the spin are fitted over
--- t = 0.5 .. 2, after the settling.  The wall gives the exact Coulomb
--- force, so the sliding acceleration is held to 1 % and the energy budget
--- must close.  The spin is not yet right: the particles of a seeded disc
--- lie in lattice rows, so its lowest row is a flat of half-width about
--- sqrt(R h / 2) (a quarter of R at 16 cells), and the wall holds the
--- whole flat.  The disc rocks on that flat like a polygon: a frictionless
--- spinning disc resting under gravity swings its spin back and forth
--- (printed below), a sliding disc's friction torque (arm mu R) is smaller
--- than the flat's (arm ~ sqrt(R h / 2)), so it hardly spins up, and a
--- rolling one tips from flat to flat, hops and rolls slow.  Those errors
--- are printed, with their observed order, not asserted (docs/verification.md).
-local mvmpm = require "mvmpm"
+-- t = 0.5 .. 2, after the settling.  Targets: sliding a within 1 %, its
+-- spin-up within 5 % from 16 cells; rolling a within 2 % at 8 cells and
+-- 1 % at 16.  Met with 2 x 2 particles: all but rolling at 8 cells
+-- (about 7 % short: the friction acts on the nodes of the wall line,
+-- whose material lies a fraction of a cell above the contact point, so
+-- the disc rolls on a slightly smaller radius) and rolling at 16 cells
+-- with linear hats (1.4 %).  With 4 x 4 particles, GIMP and APIC, the
+-- rolling targets are met at 8 and 16 cells (asserted).  The
+-- misses are printed beside the target.  The node rule (each wall node
+-- stopped alone) is printed for comparison at 16 cells: it rocks the disc
+-- on the flat of its lowest particle row (docs/verification.md).
 local V = require "mvmpm.verify"
 local I = require "mvmpm.incline"
 
-local g, R, T = I.g, I.R, I.T
+local g, R = I.g, I.R
 
-local function incline(cells, deg, mu, w0)
-  return I.run {cells = cells, deg = deg, mu = mu, w0 = w0}
+local function incline(cells, shape, deg, mu, o)
+  o = o or {}
+  return I.run {cells = cells, shape = shape, deg = deg, mu = mu, w0 = o.w0, ppc = o.ppc,
+                wall_contact = o.wall or "patch"}
 end
 
 local function order(e)
@@ -33,47 +36,99 @@ local function order(e)
   return 0 / 0
 end
 
+local function target(name, err, tol)
+  V.info(string.format("%s: error %.4f, target %g: %s", name, err, tol,
+                       err <= tol and "met" or "NOT met"), err)
+end
+
 local cells = {8, 16, 32}
 
-V.case "sliding disc (theta 30 deg, mu 0.1): acceleration, energy, spin-up"
-local sa, sal = {}, {}
-for k, c in ipairs(cells) do
-  local r = incline(c, 30, 0.1)
-  local a_ref = g * (math.sin(r.th) - 0.1 * math.cos(r.th))
-  local al_ref = 2 * 0.1 * g * math.cos(r.th) / R
-  sa[k], sal[k] = math.abs(r.a / a_ref - 1), math.abs(r.alpha / al_ref - 1)
-  V.near(string.format("sliding a / (g (sin - mu cos)), %d cells", c), r.a / a_ref, 1, 0.01)
-  V.near(string.format("energy residual / |potential change|, %d cells", c),
-         r.e.residual / math.abs(r.e.potential), 0, 0.01)
-  V.above(string.format("friction work dissipated (> 0), %d cells", c), r.e.dissipated, 1e-3)
-  V.info(string.format("spin-up alpha / (2 mu g cos / R), %d cells", c), r.alpha / al_ref)
-end
-V.info("sliding spin-up error, observed order (8 -> 32)", order(sal))
+for _, shape in ipairs {"linear", "gimp"} do
+  V.case("sliding disc (theta 30 deg, mu 0.1), " .. shape .. ": acceleration, energy, spin-up")
+  local sal = {}
+  for k, c in ipairs(cells) do
+    local r = incline(c, shape, 30, 0.1)
+    local a_ref = g * (math.sin(r.th) - 0.1 * math.cos(r.th))
+    local al_ref = 2 * 0.1 * g * math.cos(r.th) / R
+    sal[k] = math.abs(r.alpha / al_ref - 1)
+    V.near(string.format("sliding a / (g (sin - mu cos)), %d cells", c), r.a / a_ref, 1, 0.01)
+    V.near(string.format("energy residual / |potential change|, %d cells", c),
+           r.e.residual / math.abs(r.e.potential), 0, 0.01)
+    V.above(string.format("friction work dissipated (> 0), %d cells", c), r.e.dissipated, 1e-3)
+    if c >= 16 then
+      V.near(string.format("spin-up alpha / (2 mu g cos / R), %d cells", c), r.alpha / al_ref, 1, 0.05)
+    else
+      V.info(string.format("spin-up alpha / (2 mu g cos / R), %d cells", c), r.alpha / al_ref)
+    end
+  end
+  V.info("sliding spin-up error, observed order (8 -> 32)", order(sal))
 
-V.case "rolling disc (theta 25 deg, mu 0.5): acceleration and spin-up (printed)"
-local ra, ral = {}, {}
-for k, c in ipairs(cells) do
-  local r = incline(c, 25, 0.5)
+  V.case("rolling disc (theta 25 deg, mu 0.5), " .. shape .. ": acceleration, no slip, no hop")
+  local ra = {}
+  for k, c in ipairs(cells) do
+    local r = incline(c, shape, 25, 0.5)
+    local a_ref = 2 / 3 * g * math.sin(r.th)
+    ra[k] = math.abs(r.a / a_ref - 1)
+    V.info(string.format("rolling a / ((2/3) g sin), %d cells", c), r.a / a_ref)
+    if c == 8 then target("rolling a, 8 cells", ra[k], 0.02)
+    elseif c == 16 then target("rolling a, 16 cells", ra[k], 0.01) end
+    if c >= 16 then
+      -- the 8-cell target's tolerance, held from 16 cells on
+      V.near(string.format("rolling a / ((2/3) g sin), %d cells", c), r.a / a_ref, 1, 0.02)
+    end
+    -- rolling without slip: R alpha = a.  Held at 16 cells; at 32 GIMP's
+    -- disc slips (a 1.7 % high, spin 3.3 % low: R alpha / a = 0.95, not
+    -- yet explained), printed
+    if c == 16 then
+      V.near(string.format("R alpha / a (no slip), %d cells", c), r.alpha * R / r.a, 1, 0.03)
+    else
+      V.info(string.format("R alpha / a (no slip), %d cells", c), r.alpha * R / r.a)
+    end
+    V.below(string.format("largest hop (centre above R), %d cells", c), r.hop, 0.005)
+    V.near(string.format("energy residual / |potential change|, %d cells", c),
+           r.e.residual / math.abs(r.e.potential), 0, 0.01)
+  end
+  V.info("rolling acceleration error, observed order (8 -> 32)", order(ra))
+end
+
+V.case "rolling disc, 4 x 4 particles per cell: the targets (2 % at 8 cells, 1 % at 16)"
+-- a lower mass centre of the wall nodes' material (see the header)
+for _, c in ipairs {8, 16} do
+  local r = I.run {cells = c, shape = "gimp", transfer = "apic", ppc = 4, deg = 25, mu = 0.5,
+                   wall_contact = "patch"}
   local a_ref = 2 / 3 * g * math.sin(r.th)
-  ra[k], ral[k] = math.abs(r.a / a_ref - 1), math.abs(r.alpha / (a_ref / R) - 1)
-  V.info(string.format("rolling a / ((2/3) g sin), %d cells", c), r.a / a_ref)
-  V.info(string.format("rolling alpha R / a_ref, %d cells", c), r.alpha / (a_ref / R))
-  V.info(string.format("largest hop (centre above R), %d cells", c), r.hop)
-  -- the tipping from flat to flat loses energy the budget does not book
-  -- at 8 cells (17 % of the potential energy released); closed from 16
-  local res = r.e.residual / math.abs(r.e.potential)
-  if c >= 16 then
-    V.near(string.format("energy residual / |potential change|, %d cells", c), res, 0, 0.01)
-  else
-    V.info(string.format("energy residual / |potential change|, %d cells", c), res)
+  V.near(string.format("GIMP APIC, 4 x 4: rolling a / ((2/3) g sin), %d cells", c), r.a / a_ref, 1,
+         c == 8 and 0.02 or 0.01)
+end
+do
+  local r = incline(16, "linear", 25, 0.5, {ppc = 4})
+  V.info("linear FLIP, 4 x 4: rolling a / ((2/3) g sin), 16 cells", r.a / (2 / 3 * g * math.sin(r.th)))
+end
+
+V.case "frictionless spinning disc resting under gravity: the spin is kept"
+for _, shape in ipairs {"linear", "gimp"} do
+  for _, c in ipairs(cells) do
+    local r = incline(c, shape, 0, 0, {w0 = -0.2})
+    -- a round disc on a frictionless floor keeps omega = 0.2
+    V.below(string.format("%s: spin range over t = 0..2 / 0.2, %d cells", shape, c),
+            (r.wmax - r.wmin) / 0.2, 0.5)
   end
 end
-V.info("rolling acceleration error, observed order (8 -> 32)", order(ra))
-V.info("rolling spin-up error, observed order (8 -> 32)", order(ral))
 
-V.case "frictionless spinning disc resting under gravity (the lattice flat, printed)"
-for _, c in ipairs(cells) do
-  local r = incline(c, 0, 0, -0.2)
-  -- a round disc keeps omega = 0.2; rocking on the flat swings it
-  V.info(string.format("spin range over t = 0..2 (from 0.2), %d cells", c), r.wmax - r.wmin)
+V.case "the patch rule is deterministic: 1 and 2 threads give the same bits"
+do
+  local a = I.run {cells = 8, shape = "gimp", deg = 25, mu = 0.5, wall_contact = "patch", threads = 1}
+  local b = I.run {cells = 8, shape = "gimp", deg = 25, mu = 0.5, wall_contact = "patch", threads = 2}
+  V.holds("rolling a, spin and residual equal at 1 and 2 threads",
+          a.a == b.a and a.alpha == b.alpha and a.e.residual == b.e.residual, a.a - b.a)
+end
+
+V.case "the node rule, for comparison (16 cells, linear hats)"
+do
+  local s = incline(16, "linear", 30, 0.1, {wall = "node"})
+  local r = incline(16, "linear", 25, 0.5, {wall = "node"})
+  local z = incline(16, "linear", 0, 0, {wall = "node", w0 = -0.2})
+  V.info("node rule: sliding spin-up / reference", s.alpha / (2 * 0.1 * g * math.cos(s.th) / R))
+  V.info("node rule: rolling a / reference", r.a / (2 / 3 * g * math.sin(r.th)))
+  V.info("node rule: frictionless spin range / 0.2", (z.wmax - z.wmin) / 0.2)
 end

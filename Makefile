@@ -64,6 +64,19 @@ $(BIN): $(OBJ)
 $(BUILD)/%.o: src/%.c | $(BUILD)
 	$(CC) $(CFLAGS) -c $< -o $@
 
+# the build's identity (src/version.c): git describe of this tree, else
+# the release number, and the compiler and flags.  The header is
+# rewritten only when its text changes, so only version.o is rebuilt
+$(BUILD)/version.o: $(BUILD)/version_gen.h
+$(BUILD)/version.o: CFLAGS += -I$(BUILD)
+$(BUILD)/version_gen.h: FORCE | $(BUILD)
+	@v=$$(git describe --always --dirty 2>/dev/null) || v=; \
+	cc=$$($(CC) --version 2>/dev/null | head -1); \
+	esc() { printf '%s' "$$1" | sed 's/[\\"]/\\&/g'; }; \
+	{ [ -n "$$v" ] && printf '#define MVMPM_GIT_VERSION "%s"\n' "$$(esc "$$v")"; \
+	  printf '#define MVMPM_BUILD "%s"\n' "$$(esc "$(CC) ($$cc) $(strip $(CFLAGS))")"; } >$@.new; \
+	if cmp -s $@.new $@; then rm -f $@.new; else mv $@.new $@; fi
+
 $(BUILD)/unit/%: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
 	$(CC) $(CFLAGS) -Isrc -o $@ $< $(LIBOBJ) $(LDLIBS)
 
@@ -141,7 +154,9 @@ study: $(BIN)
 	@mkdir -p out/study docs/figures
 	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
 
-.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale pbx-shear fuzz random study
+FORCE:
+
+.PHONY: FORCE all deps unit test bench clean check-paraview figures hard pbx-scale pbx-shear fuzz random study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d)
 
 # ParaView (Debian's paraview, not a build dependency) opens a run's XDMF

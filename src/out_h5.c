@@ -166,6 +166,14 @@ static int putmeta(h5s *S, const h5meta *meta) {
       putstr(S, f, "/", "units", meta->units) ||
       putstr(S, f, "/", "scene", meta->scene))
     return -1;
+  /* provenance: what made the file */
+  if ((meta->version && putstr(S, f, "/", "version", meta->version)) ||
+      (meta->build && putstr(S, f, "/", "build", meta->build)) ||
+      (meta->command && putstr(S, f, "/", "command", meta->command)) ||
+      (meta->params && putstr(S, f, "/", "params", meta->params)) ||
+      (meta->restarted &&
+       putstr(S, f, "/", "restarted_from", meta->restarted)))
+    return -1;
   return 0;
 }
 
@@ -820,6 +828,8 @@ int out_h5_read_state(const char *path, const char *format, particles *ps,
   for (k = 0; k < nb; k++) b[k].data = NULL, b[k].n = 0;
   begin(&S, path, err, errlen);
   meta->units = meta->scene = meta->source = NULL;
+  meta->version = meta->build = meta->command = meta->params = NULL;
+  meta->restarted = NULL;
   errno = 0;
   if (ps->n != 0) {
     r = fail(&S, "cannot read into a store that already holds particles");

@@ -15,7 +15,10 @@
 **     when meta->source is NULL.  A dataset, not an attribute, because a
 **     scene can exceed the 64 KiB an attribute may hold.
 **   root attributes: "format" = "mvmpm-snapshot-1", "time" (F64),
-**     "step" (I64), "cell" (F64), "dim" (I32), "units", "scene".
+**     "step" (I64), "cell" (F64), "dim" (I32), "units", "scene"; and the
+**     provenance strings given: "version", "build", "command", "params"
+**     (one "name = value" line per scene parameter in force), and in a
+**     continued run "restarted_from" (the checkpoint).
 ** Strings are variable-length UTF-8 (h5py reads them as str).
 ** In front of it all: the 512-byte checksum block of h5sum.h (an HDF5
 ** user block); reading checks it before HDF5 sees the file.
@@ -39,6 +42,12 @@ typedef struct h5meta {
   const char *units;      /* e.g. "nondimensional" or "SI" */
   const char *scene;      /* scene file name */
   const char *source;     /* the scene's source text (may be NULL) */
+  /* provenance, each written as a root string attribute when not NULL */
+  const char *version;    /* the engine's version (git describe) */
+  const char *build;      /* compiler and flags */
+  const char *command;    /* the command line of the run */
+  const char *params;     /* "name = value" lines: the parameters used */
+  const char *restarted;  /* the checkpoint the run continued from */
 } h5meta;
 
 /* 0 on success; -1 with a message naming the file in err */

@@ -394,6 +394,7 @@ void ckpt_write(lua_State *L, int simidx) {
   int64_t *sn = NULL;
   h5blob b[CB_N];
   h5meta meta;
+  h5prov prov;
   char path[1100], old[1100], err[1024], abs_scene[PATH_MAX];
   const char *scene, *source, *state = NULL;
   size_t statelen = 0;
@@ -462,10 +463,10 @@ void ckpt_write(lua_State *L, int simidx) {
     meta.cell = s->g.h;
     meta.units = ls->units;
     meta.scene = scene;
-    run_provenance(L, &meta);
+    run_provenance(L, &prov);
     ckname(path, sizeof path, ls->outdir, ls->ck_count);
-    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta, b, CB_N, err,
-                           sizeof err);
+    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta,
+                           &prov, b, CB_N, err, sizeof err);
     lua_pop(L, 3);
     if (r == 0 && syncdir(ls->outdir)) {
       snprintf(err, sizeof err, "%s: cannot sync the directory (%s)",

@@ -150,9 +150,9 @@ int run_mkdirs(const char *path, char *err, size_t errlen);
 /* flush the diagnostics table to disk; its length in bytes, -1 if none */
 long run_sync(lua_State *L, lsim *ls);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);
-/* fill meta's provenance (version, build, command, params, restarted
+/* fill prov (version, build, command, params, restarted
 ** from); pushes 3 values that hold the strings: pop them after writing */
-struct h5meta;
-void run_provenance(lua_State *L, struct h5meta *meta);
+struct h5prov;
+void run_provenance(lua_State *L, struct h5prov *prov);
 
 #endif

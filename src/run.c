@@ -130,8 +130,9 @@ static void csv_row(lua_State *L, lsim *ls) {
 
 /* the provenance every output file carries: the strings are pushed on
 ** the stack (3 values), where they stay alive until the caller pops */
-void run_provenance(lua_State *L, h5meta *meta) {
+void run_provenance(lua_State *L, h5prov *meta) {
   char *p = lmvmpm_params_text(L);
+  memset(meta, 0, sizeof *meta);
   meta->version = mvmpm_version;
   meta->build = mvmpm_build;
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.command");
@@ -149,10 +150,9 @@ static const char *csv_preamble(lua_State *L) {
   static const char *const name[] = {"version", "build", "command",
                                      "restarted_from"};
   const char *val[4], *p, *nl;
-  h5meta m;
+  h5prov m;
   luaL_Buffer b;
   int k;
-  memset(&m, 0, sizeof m);
   run_provenance(L, &m);
   val[0] = m.version; val[1] = m.build; val[2] = m.command;
   val[3] = m.restarted;
@@ -178,6 +178,7 @@ static const char *csv_preamble(lua_State *L) {
 
 int run_snapshot(lua_State *L, lsim *ls, const char *path) {
   h5meta meta;
+  h5prov prov;
   char err[512];
   memset(&meta, 0, sizeof meta);
   meta.time = ls->s.t;
@@ -187,8 +188,8 @@ int run_snapshot(lua_State *L, lsim *ls, const char *path) {
   meta.scene = ls->scene;
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   meta.source = lua_tostring(L, -1);
-  run_provenance(L, &meta);
-  if (out_h5_write(path, &ls->s.ps, &meta, err, sizeof err)) {
+  run_provenance(L, &prov);
+  if (out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err)) {
     lua_pop(L, 4);
     return luaL_error(L, "%s", err);
   }
@@ -505,6 +506,7 @@ static void residual_check(lsim *ls, double from) {
 */
 static void failed_state(lua_State *L, lsim *ls) {
   h5meta meta;
+  h5prov prov;
   char path[1100], err[512];
   int r;
   ls->failed[0] = '\0';
@@ -519,8 +521,8 @@ static void failed_state(lua_State *L, lsim *ls) {
   meta.scene = ls->scene;
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   meta.source = lua_tostring(L, -1);
-  run_provenance(L, &meta);
-  r = out_h5_write(path, &ls->s.ps, &meta, err, sizeof err);
+  run_provenance(L, &prov);
+  r = out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err);
   lua_pop(L, 4);
   if (r == 0)
     snprintf(ls->failed, sizeof ls->failed, "; the state it stopped in is "

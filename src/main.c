@@ -422,8 +422,6 @@ static int cmd_run(int argc, char **argv) {
       return 1;
     }
     if (restart_prepare(L, &o, &c, root, sizeof root) ||
-        (lua_pushstring(L, c.path),
-         lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.restarted"), 0) ||
         restart_sandbox(&o, &c) ||
         (!o.scene && !(o.scene = stored_scene = ckpt_string(&c, CB_SCENE))) ||
         !(text = restart_scene_text(&c, o.scene))) {
@@ -432,6 +430,9 @@ static int cmd_run(int argc, char **argv) {
       lua_close(L);
       return 1;
     }
+    /* the provenance of what this run writes names where it came from */
+    lua_pushstring(L, c.path);
+    lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.restarted");
   } else if (o.out) snprintf(root, sizeof root, "%s", o.out);
   else {
     basename_noext(o.scene, name, sizeof name);

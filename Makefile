@@ -108,7 +108,7 @@ PBX_SHEAR = --set size=0.36e-3 --set scale=0.5 --set cells=4 --set packing=0.7 -
 pbx-shear: $(BIN)
 	@mkdir -p out
 	nohup sh -c 'for r in binder:true dry:false; do name=$${r%%:*}; \
-	  ./$(BIN) run scenarios/pbx9501.lua $(PBX_SHEAR) --set binder=$${r#*:} --out out/pbx_shear_$$name || exit 1; \
+	  ./$(BIN) run scenarios/pbx9501.lua $(PBX_SHEAR) --set binder=$${r#*:} --out out/pbx_shear_$$name --overwrite || exit 1; \
 	  mkdir -p docs/figures/pbx_shear/$$name; \
 	  cp out/pbx_shear_$$name/pbx_*.png out/pbx_shear_$$name/pbx_summary.txt out/pbx_shear_$$name/pbx_locking.csv \
 	     out/pbx_shear_$$name/pbx_stats.csv docs/figures/pbx_shear/$$name/; \
@@ -177,7 +177,7 @@ shear: $(BIN)
 	@mkdir -p out
 	nohup sh -c 'for r in $(SHEAR_RUNS); do \
 	  name=$${r%%:*}; rest=$${r#*:}; scene=$${rest%%:*}; opt=$${rest#*:}; \
-	  ./$(BIN) run $$scene $$opt --out out/$$name --quiet || exit 1; \
+	  ./$(BIN) run $$scene $$opt --out out/$$name --overwrite --quiet || exit 1; \
 	  mkdir -p docs/figures/shear/$$name; \
 	  cp out/$$name/*.png out/$$name/summary.txt out/$$name/locking.csv docs/figures/shear/$$name/; \
 	done; echo shear runs done' > out/shear.log 2>&1 &

@@ -153,7 +153,7 @@ char *lmvmpm_params_text(lua_State *L) {
   }
   lua_settop(L, top);
   if (!bad && (out = malloc(len + 1))) {
-    qsort(line, n, sizeof *line, usedcmp);
+    if (n) qsort(line, n, sizeof *line, usedcmp);
     out[0] = '\0';
     for (len = 0, k = 0; k < n; k++) {
       size_t m = strlen(line[k]);

@@ -87,6 +87,19 @@ $(BIN): $(OBJ)
 $(BUILD)/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)
 	$(CC) $(CFLAGS) -c $< -o $@
 
+# the build's identity (src/version.c): git describe of this tree, else
+# the release number, and the compiler and flags.  The header is
+# rewritten only when its text changes, so only version.o is rebuilt
+$(BUILD)/version.o: $(BUILD)/version_gen.h
+$(BUILD)/version.o: CFLAGS += -I$(BUILD)
+$(BUILD)/version_gen.h: FORCE | $(BUILD)
+	@v=$$(git describe --always --dirty 2>/dev/null) || v=; \
+	cc=$$($(CC) --version 2>/dev/null | head -1); \
+	esc() { printf '%s' "$$1" | sed 's/[\\"]/\\&/g'; }; \
+	{ [ -n "$$v" ] && printf '#define MVMPM_GIT_VERSION "%s"\n' "$$(esc "$$v")"; \
+	  printf '#define MVMPM_BUILD "%s"\n' "$$(esc "$(CC) ($$cc) $(strip $(CFLAGS))")"; } >$@.new; \
+	if cmp -s $@.new $@; then rm -f $@.new; else mv $@.new $@; fi
+
 $(BUILD)/unit/%: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
 	$(CC) $(CFLAGS) -Isrc -o $@ $< $(LIBOBJ) $(LDLIBS)
 
@@ -118,7 +131,7 @@ PBX_SHEAR = --set size=0.36e-3 --set scale=0.5 --set cells=4 --set packing=0.7 -
 pbx-shear: $(BIN)
 	@mkdir -p out
 	nohup sh -c 'for r in binder:true dry:false; do name=$${r%%:*}; \
-	  ./$(BIN) run scenarios/pbx9501.lua $(PBX_SHEAR) --set binder=$${r#*:} --out out/pbx_shear_$$name || exit 1; \
+	  ./$(BIN) run scenarios/pbx9501.lua $(PBX_SHEAR) --set binder=$${r#*:} --out out/pbx_shear_$$name --overwrite || exit 1; \
 	  mkdir -p docs/figures/pbx_shear/$$name; \
 	  cp out/pbx_shear_$$name/pbx_*.png out/pbx_shear_$$name/pbx_summary.txt out/pbx_shear_$$name/pbx_locking.csv \
 	     out/pbx_shear_$$name/pbx_stats.csv docs/figures/pbx_shear/$$name/; \
@@ -194,7 +207,9 @@ study: $(BIN)
 	@mkdir -p out/study docs/figures
 	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
 
-.PHONY: all deps deps-paraview unit test bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
+FORCE:
+
+.PHONY: FORCE all deps deps-paraview unit test bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d) $(PICOBJ:.o=.d)
 
 # ParaView (Debian's paraview, installed by make deps-paraview; not a
@@ -224,7 +239,7 @@ shear: $(BIN)
 	@mkdir -p out
 	nohup sh -c 'for r in $(SHEAR_RUNS); do \
 	  name=$${r%%:*}; rest=$${r#*:}; scene=$${rest%%:*}; opt=$${rest#*:}; \
-	  ./$(BIN) run $$scene $$opt --out out/$$name --quiet || exit 1; \
+	  ./$(BIN) run $$scene $$opt --out out/$$name --overwrite --quiet || exit 1; \
 	  mkdir -p docs/figures/shear/$$name; \
 	  cp out/$$name/*.png out/$$name/summary.txt out/$$name/locking.csv docs/figures/shear/$$name/; \
 	done; echo shear runs done' > out/shear.log 2>&1 &

@@ -25,7 +25,7 @@ echo "mvmpm bench: $("$bin" --version), $(git rev-parse --short HEAD 2>/dev/null
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 if ${CC:-cc} -O2 -o "$tmp/stream" bench/stream.c 2>/dev/null; then "$tmp/stream"; fi
-for f in bench/block.lua bench/disks.lua bench/grains.lua bench/effects.lua bench/threads.lua; do
+for f in bench/block.lua bench/disks.lua bench/grains.lua bench/effects.lua bench/snapshot.lua bench/threads.lua; do
   # keep the figures; drop the test runner's headings and counts
   "$bin" test "$f" | grep -Ev '^(== |-- .*passed|[0-9]+ passed)'
 done

@@ -191,14 +191,13 @@ end
 -- mvmpm.shear), the debonding and energy plots, a summary
 local function report(dir)
   local events = shear.locking(mon.strain, mon.tau, 2 * P.ramp)
-  local f = assert(io.open(dir .. "/pbx_locking.csv.part", "w"))
+  local f = assert(mvmpm.open(dir .. "/pbx_locking.csv"))
   f:write("strain,peak_strain,end_strain,base,peak,mean\n")
   for _, ev in ipairs(events) do
     f:write(string.format("%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", ev.strain, ev.peak_strain,
                           ev.end_strain, ev.base, ev.peak, ev.mean))
   end
-  f:close()
-  assert(os.rename(dir .. "/pbx_locking.csv.part", dir .. "/pbx_locking.csv"))
+  assert(f:close())
   local ex, ey = {}, {}
   for k, ev in ipairs(events) do ex[k], ey[k] = ev.peak_strain, ev.peak end
   local series = {{x = mon.strain, y = mon.tau, label = "shear stress (F_right - F_left) / 2H"}}
@@ -237,10 +236,9 @@ local function report(dir)
     string.format("invariant failures          %d", #mon.bad),
   }
   for _, b in ipairs(mon.bad) do lines[#lines + 1] = "invariant: " .. b end
-  f = assert(io.open(dir .. "/pbx_summary.txt.part", "w"))
+  f = assert(mvmpm.open(dir .. "/pbx_summary.txt"))
   f:write(table.concat(lines, "\n"), "\n")
-  f:close()
-  assert(os.rename(dir .. "/pbx_summary.txt.part", dir .. "/pbx_summary.txt"))
+  assert(f:close())
   print(table.concat(lines, "\n"))
 end
 
@@ -249,7 +247,7 @@ sim:every {steps = 1, fn = function(s)
   if not written and dir ~= "" then
     written = true
     pack.write_csv(bed, dir .. "/pbx")
-    hist = assert(io.open(dir .. "/pbx_history.csv", "w"))
+    hist = assert(mvmpm.open(dir .. "/pbx_history.csv"))
     hist:write("step,t,strain,tau,fy_left,fy_right,kinetic,strain_energy,plastic,viscous,"
                .. "friction,boundary_work,residual,bonded_area,debonded_fraction,jmin,jmax\n")
   end

@@ -10,6 +10,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
@@ -410,7 +411,8 @@ void ckpt_write(lua_State *L, int simidx) {
   int64_t *sn = NULL;
   h5blob b[CB_N];
   h5meta meta;
-  char path[1100], old[1100], err[1024];
+  h5prov prov;
+  char path[1100], old[1100], err[1024], abs_scene[PATH_MAX];
   const char *scene, *source, *state = NULL;
   size_t statelen = 0;
   int k, r, top = lua_gettop(L);
@@ -447,6 +449,13 @@ void ckpt_write(lua_State *L, int simidx) {
   params(L, &pa);
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.scene");
   scene = lua_isstring(L, -1) ? lua_tostring(L, -1) : ls->scene;
+  /* stored absolute, so the run continues from any directory */
+  if (scene[0] != '/' && getcwd(abs_scene, sizeof abs_scene) &&
+      strlen(abs_scene) + strlen(scene) + 2 <= sizeof abs_scene) {
+    strcat(abs_scene, "/");
+    strcat(abs_scene, scene);
+    scene = abs_scene;
+  }
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   source = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
   if (v.failed || rn.bad || in.bad || fl.bad || sf.bad || pa.bad || !st || !sn) {
@@ -471,9 +480,11 @@ void ckpt_write(lua_State *L, int simidx) {
     meta.cell = s->g.h;
     meta.units = ls->units;
     meta.scene = scene;
+    run_provenance(L, &prov);
     ckname(path, sizeof path, ls->outdir, ls->ck_count);
-    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta, b, CB_N, err,
-                           sizeof err);
+    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta,
+                           &prov, b, CB_N, err, sizeof err);
+    lua_pop(L, 3);
     if (r == 0 && syncdir(ls->outdir)) {
       snprintf(err, sizeof err, "%s: cannot sync the directory (%s)",
                ls->outdir, strerror(errno));

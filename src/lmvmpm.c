@@ -25,7 +25,9 @@
 #include "par.h"
 #include "lsim.h"
 #include "lualib.h"
+#include "ofile.h"
 #include "sandbox.h"
+#include "version.h"
 
 static void regtable(lua_State *L, const char *name) {
   if (lua_getfield(L, LUA_REGISTRYINDEX, name) != LUA_TTABLE) {
@@ -74,6 +76,7 @@ static int params(lua_State *L) {
   lua_newtable(L);
   regtable(L, "mvmpm.overrides");
   regtable(L, "mvmpm.declared");
+  regtable(L, "mvmpm.used");               /* 5: for the provenance */
   lua_pushnil(L);
   while (lua_next(L, 1)) {
     const char *name;
@@ -90,10 +93,78 @@ static int params(lua_State *L) {
       convert(L, name, t);
       lua_remove(L, -2);
     } else lua_pop(L, 1);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, 5, name);              /* used */
     lua_setfield(L, 2, name);              /* key stays for lua_next */
   }
-  lua_pop(L, 2);
+  lua_pop(L, 3);
   return 1;
+}
+
+/* one "name = value" line: numbers with the fewest digits (15 to 17)
+** that read back as the same double, strings quoted */
+static int usedcmp(const void *a, const void *b) {
+  return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+char *lmvmpm_params_text(lua_State *L) {
+  char **line = NULL, *out = NULL;
+  size_t n = 0, cap = 0, len = 0, k;
+  int bad = 0, top = lua_gettop(L);
+  if (lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.used") == LUA_TTABLE) {
+    lua_pushnil(L);
+    while (lua_next(L, -2)) {
+      char val[64], *l = NULL;
+      const char *name = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : NULL;
+      const char *v = val;
+      size_t vl;
+      if (lua_isinteger(L, -1))
+        snprintf(val, sizeof val, "%lld", (long long)lua_tointeger(L, -1));
+      else if (lua_type(L, -1) == LUA_TNUMBER) {
+        double x = lua_tonumber(L, -1);
+        int prec;
+        for (prec = 15; prec < 17; prec++) { /* the shortest that reads back */
+          snprintf(val, sizeof val, "%.*g", prec, x);
+          if (strtod(val, NULL) == x) break;
+        }
+        if (prec == 17) snprintf(val, sizeof val, "%.17g", x);
+      }
+      else if (lua_type(L, -1) == LUA_TBOOLEAN)
+        snprintf(val, sizeof val, "%s", lua_toboolean(L, -1) ? "true" : "false");
+      else if (lua_type(L, -1) == LUA_TSTRING) {
+        lua_pushfstring(L, "\"%s\"", lua_tostring(L, -1));
+        v = lua_tostring(L, -1);
+      } else v = NULL;
+      vl = v ? strlen(v) : 0;
+      if (name && v) {
+        if (n == cap) {
+          char **p = realloc(line, (cap = cap ? 2 * cap : 32) * sizeof *p);
+          if (!p) bad = 1;
+          else line = p;
+        }
+        if (!bad && (l = malloc(strlen(name) + vl + 5))) {
+          sprintf(l, "%s = %s\n", name, v);
+          line[n++] = l;
+          len += strlen(l);
+        } else bad = 1;
+      }
+      lua_settop(L, top + 2); /* the table and the key */
+      if (bad) break;
+    }
+  }
+  lua_settop(L, top);
+  if (!bad && (out = malloc(len + 1))) {
+    if (n) qsort(line, n, sizeof *line, usedcmp);
+    out[0] = '\0';
+    for (len = 0, k = 0; k < n; k++) {
+      size_t m = strlen(line[k]);
+      memcpy(out + len, line[k], m + 1);
+      len += m;
+    }
+  }
+  for (k = 0; k < n; k++) free(line[k]);
+  free(line);
+  return out;
 }
 
 static int strptrcmp(const void *a, const void *b) {
@@ -329,6 +400,62 @@ static int lcpu(lua_State *L) {
   return 4;
 }
 
+/*
+** mvmpm.open(path) -> a Lua file open for writing, for a scene's own
+** tables.  The bytes go to path.part, renamed to path when the file is
+** closed (or collected), so a table under its final name is whole.
+** Under --sandbox the path is one inside the output directory
+** (sandbox_path) and no link is followed: the sandbox's way to write.
+*/
+static int ofclose(lua_State *L) {
+  luaL_Stream *p = luaL_checkudata(L, 1, LUA_FILEHANDLE);
+  char part[1200];
+  const char *final;
+  int ok, en;
+  errno = 0;
+  ok = fclose(p->f) == 0;
+  en = errno;
+  lua_getiuservalue(L, 1, 1);
+  final = lua_tostring(L, -1);
+  snprintf(part, sizeof part, "%s.part", final);
+  if (ok && rename(part, final) != 0) {
+    ok = 0;
+    en = errno;
+  }
+  errno = en;
+  return luaL_fileresult(L, ok, final);
+}
+
+static int lopen(lua_State *L) {
+  char buf[1100], part[1200];
+  const char *path = sandbox_path(L, luaL_checkstring(L, 1), "mvmpm.open",
+                                  buf, sizeof buf);
+  luaL_Stream *st;
+  int fd;
+  if (snprintf(part, sizeof part, "%s.part", path) >= (int)sizeof part)
+    return luaL_error(L, "mvmpm.open: path '%s' is too long", path);
+  sandbox_file(L, part, "mvmpm.open");
+  /* the io library's file type; its metatable outlives a sandbox that
+  ** removed the global io */
+  luaL_requiref(L, "io", luaopen_io, 0);
+  lua_pop(L, 1);
+  st = lua_newuserdatauv(L, sizeof *st, 1);
+  st->f = NULL;
+  st->closef = NULL; /* a closed file until it is open */
+  luaL_setmetatable(L, LUA_FILEHANDLE);
+  lua_pushstring(L, path);
+  lua_setiuservalue(L, -2, 1);
+  fd = ofile_create(part);
+  if (fd < 0 || !(st->f = fdopen(fd, "w"))) {
+    int en = errno;
+    if (fd >= 0) close(fd);
+    errno = en;
+    return luaL_fileresult(L, 0, part);
+  }
+  st->closef = ofclose;
+  return 1;
+}
+
 /* mvmpm.clock() -> seconds on a monotonic wall clock, for timing runs
 ** (os.clock is the process's CPU time, not elapsed time) */
 static int lclock(lua_State *L) {
@@ -364,6 +491,7 @@ static int modindex(lua_State *L) {
 int luaopen_mvmpm(lua_State *L) {
   static const luaL_Reg fns[] = {{"sim", lsim_new}, {"params", params},
                                  {"load", load}, {"clock", lclock}, {"cpu", lcpu},
+                                 {"open", lopen},
                                  {NULL, NULL}};
   int mod;
   luaL_newlib(L, fns);
@@ -372,7 +500,7 @@ int luaopen_mvmpm(lua_State *L) {
   lua_pushcfunction(L, modindex);
   lua_setfield(L, -2, "__index");
   lua_setmetatable(L, mod);
-  lua_pushstring(L, MVMPM_VERSION);
+  lua_pushstring(L, mvmpm_version);
   lua_setfield(L, mod, "version");
   lua_pushinteger(L, DIM);
   lua_setfield(L, mod, "dim");

@@ -25,6 +25,10 @@ int lmvmpm_load(lua_State *L, const char *path);
 /* the same with the scene's text given (path names it in messages): a
 ** restart runs the very text it compared with the checkpoint's */
 int lmvmpm_load_text(lua_State *L, const char *path, const char *src);
+/* the scene parameters in force (every mvmpm.params name the scene
+** declared, overridden or not), one "name = value" line each in name
+** order; malloc'ed, NULL when out of memory */
+char *lmvmpm_params_text(lua_State *L);
 /* a regular file's bytes, NUL-terminated (malloc'ed); NULL with the
 ** reason in err if it cannot be read or is no regular file */
 char *lmvmpm_read(const char *path, char *err, size_t errlen);

@@ -58,6 +58,13 @@ typedef struct lsim {
   long csv_resume;        /* restarted: the table's length then, or -1 */
   char ck_last[1100];     /* the newest checkpoint written */
   int advised;            /* sim_advice was printed (once, at the first run) */
+  /* the energy budget's residual: warned once when it passes
+  ** warn_residual (a fraction of the energy scale; 0: never) */
+  double warn_residual;
+  int warn_given;         /* sim:output{warn_residual = } was given */
+  int warned;
+  double e_peak;          /* the largest kinetic + strain seen */
+  char failed[1100];      /* the state written when a guard stopped the run */
 } lsim;
 
 typedef struct lbody {
@@ -134,10 +141,20 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps);
 /* refuse a run to t_end that would need more than LSIM_MAX_STEPS steps
 ** of the step it would start with (fixed, or the CFL step) */
 void run_check_steps(lua_State *L, lsim *ls, double t_end);
+/* a new run's directory: one holding another run's outputs (snapshots,
+** particles.xmf, diagnostics.csv, checkpoints, failed states) is refused
+** unless overwrite, which removes those files and no other; 0, or -1
+** with err */
+int run_claim_outdir(const char *dir, int overwrite, char *err,
+                     size_t errlen);
 /* mkdir -p; 0, or -1 with err naming the directory and the reason */
 int run_mkdirs(const char *path, char *err, size_t errlen);
 /* flush the diagnostics table to disk; its length in bytes, -1 if none */
 long run_sync(lua_State *L, lsim *ls);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);
+/* fill prov (version, build, command, params, restarted
+** from); pushes 3 values that hold the strings: pop them after writing */
+struct h5prov;
+void run_provenance(lua_State *L, struct h5prov *prov);
 
 #endif

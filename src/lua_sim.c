@@ -497,10 +497,11 @@ static int lat_end(lua_State *L) {
   return 0;
 }
 
-/* sim:output{dir = "out/x", every = 0.5, csv_every = 1, checkpoint = 2} */
+/* sim:output{dir = "out/x", every = 0.5, csv_every = 1, checkpoint = 2,
+** warn_residual = 0.05} */
 static int loutput(lua_State *L) {
   static const char *const keys[] = {"dir", "every", "csv_every",
-                                     "checkpoint", NULL};
+                                     "checkpoint", "warn_residual", NULL};
   lsim *ls = lsim_check(L, 1);
   char buf[1100];
   luaL_checktype(L, 2, LUA_TTABLE);
@@ -526,6 +527,13 @@ static int loutput(lua_State *L) {
   ls->csv_every = (long)chk_num(L, 2, "output", "csv_every",
                                 ls->csv_every ? (double)ls->csv_every : 1, 0, 1e15,
                                 CHK_INT);
+  lua_getfield(L, 2, "warn_residual");
+  if (!lua_isnil(L, -1)) {
+    ls->warn_residual = chk_num(L, 2, "output", "warn_residual", 0, 0,
+                                HUGE_VAL, 0);
+    ls->warn_given = 1;
+  }
+  lua_pop(L, 1);
   ls->out_enabled = 1;
   return 0;
 }

@@ -12,8 +12,9 @@
 #include "ofile.h"
 #include "out_csv.h"
 
-int out_csv_open(csvout *c, const char *path, const char *const *cols,
-                 int ncol, char *err, size_t errlen) {
+int out_csv_open(csvout *c, const char *path, const char *preamble,
+                 const char *const *cols, int ncol, char *err,
+                 size_t errlen) {
   char part[1040];
   int k;
   memset(c, 0, sizeof *c);
@@ -25,6 +26,7 @@ int out_csv_open(csvout *c, const char *path, const char *const *cols,
     return -1;
   }
   c->ncol = ncol;
+  if (preamble) fputs(preamble, c->f);
   for (k = 0; k < ncol; k++) fprintf(c->f, "%s%s", k ? "," : "", cols[k]);
   fputc('\n', c->f);
   return 0;

@@ -17,8 +17,11 @@ typedef struct csvout {
   int bad;        /* a write failed: the file may end in a torn row */
 } csvout;
 
-int out_csv_open(csvout *c, const char *path, const char *const *cols,
-                 int ncol, char *err, size_t errlen);
+/* preamble (may be NULL): lines of "# " comments written before the
+** header row (the run's provenance) */
+int out_csv_open(csvout *c, const char *path, const char *preamble,
+                 const char *const *cols, int ncol, char *err,
+                 size_t errlen);
 /* continue a table a checkpoint recorded at `length` bytes: the rows a
 ** killed run wrote after it are cut off, and rows are appended.  The
 ** table is "<path>.part", or path itself when the run had finished

@@ -35,6 +35,7 @@ typedef struct h5s {
   hid_t file;
   unsigned flags;   /* the fields written: PF_OUTPUT or PF_RESTART */
   const char *format; /* the "format" attribute written */
+  const h5prov *prov; /* provenance attributes written, or NULL */
   void *buf;        /* row-major staging for (n, ncomp) datasets */
   size_t bufsz;
   H5E_auto2_t efunc; /* HDF5's error printer, restored on the way out */
@@ -165,6 +166,19 @@ static int putmeta(h5s *S, const h5meta *meta) {
       putattr(S, f, "/", "dim", H5T_STD_I32LE, H5T_NATIVE_INT, &dim) ||
       putstr(S, f, "/", "units", meta->units) ||
       putstr(S, f, "/", "scene", meta->scene))
+    return -1;
+  return 0;
+}
+
+/* provenance: what made the file */
+static int putprov(h5s *S, const h5prov *p) {
+  hid_t f = S->file;
+  if (!p) return 0;
+  if ((p->version && putstr(S, f, "/", "version", p->version)) ||
+      (p->build && putstr(S, f, "/", "build", p->build)) ||
+      (p->command && putstr(S, f, "/", "command", p->command)) ||
+      (p->params && putstr(S, f, "/", "params", p->params)) ||
+      (p->restarted && putstr(S, f, "/", "restarted_from", p->restarted)))
     return -1;
   return 0;
 }
@@ -322,7 +336,7 @@ static int create(h5s *S, const char *tmp, const particles *ps) {
     if (ps->fields[f].flags & S->flags) raw += (size_t)ps->fields[f].ncomp;
   /* grow in a few large steps: a quarter of the raw data at a time */
   grow = raw > SIZE_MAX / 2 / (ps->n + 1) ? SIZE_MAX / 4 : raw * 2 * ps->n;
-  if (grow < ((size_t)1 << 20)) grow = (size_t)1 << 20;
+  if (grow < ((size_t)1 << 16)) grow = (size_t)1 << 16;
   errno = 0;
   fapl = H5Pcreate(H5P_FILE_ACCESS);
   if (fapl < 0 || H5Pset_fapl_core(fapl, grow, 0) < 0 ||
@@ -449,7 +463,7 @@ static int build(h5s *S, const char *tmp, const particles *ps,
                  size_t *size) {
   int f;
   if (deflate_ok(S) || stage(S, ps) || create(S, tmp, ps) ||
-      putmeta(S, meta))
+      putmeta(S, meta) || putprov(S, S->prov))
     return -1;
   for (f = 0; f < ps->nfields; f++)
     if ((ps->fields[f].flags & S->flags) && putfield(S, ps, &ps->fields[f]))
@@ -495,8 +509,8 @@ static int commit(h5s *S, int fd, const char *tmp, const char *img,
 /* the temp file is opened first, so a bad directory fails before work */
 int out_h5_write_state(const char *path, const char *format,
                        const particles *ps, unsigned flags,
-                       const h5meta *meta, const h5blob *b, int nb,
-                       char *err, size_t errlen) {
+                       const h5meta *meta, const h5prov *prov,
+                       const h5blob *b, int nb, char *err, size_t errlen) {
   h5s S;
   char *tmp;
   void *img = NULL;
@@ -505,6 +519,7 @@ int out_h5_write_state(const char *path, const char *format,
   begin(&S, path, err, errlen);
   S.flags = flags;
   S.format = format ? format : FORMAT;
+  S.prov = prov;
   errno = 0;
   tmp = malloc(strlen(path) + 5);
   if (!tmp) {
@@ -532,8 +547,15 @@ out:
 
 int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
                  char *err, size_t errlen) {
-  return out_h5_write_state(path, NULL, ps, PF_OUTPUT, meta, NULL, 0, err,
-                            errlen);
+  return out_h5_write_state(path, NULL, ps, PF_OUTPUT, meta, NULL, NULL, 0,
+                            err, errlen);
+}
+
+int out_h5_write_prov(const char *path, const particles *ps,
+                      const h5meta *meta, const h5prov *prov, char *err,
+                      size_t errlen) {
+  return out_h5_write_state(path, NULL, ps, PF_OUTPUT, meta, prov, NULL, 0,
+                            err, errlen);
 }
 
 /* }====================================================== */

@@ -15,7 +15,10 @@
 **     when meta->source is NULL.  A dataset, not an attribute, because a
 **     scene can exceed the 64 KiB an attribute may hold.
 **   root attributes: "format" = "mvmpm-snapshot-1", "time" (F64),
-**     "step" (I64), "cell" (F64), "dim" (I32), "units", "scene".
+**     "step" (I64), "cell" (F64), "dim" (I32), "units", "scene"; and the
+**     provenance strings given: "version", "build", "command", "params"
+**     (one "name = value" line per scene parameter in force), and in a
+**     continued run "restarted_from" (the checkpoint).
 ** Strings are variable-length UTF-8 (h5py reads them as str).
 ** In front of it all: the 512-byte checksum block of h5sum.h (an HDF5
 ** user block); reading checks it before HDF5 sees the file.
@@ -40,10 +43,23 @@ typedef struct h5meta {
   const char *scene;      /* scene file name */
   const char *source;     /* the scene's source text (may be NULL) */
 } h5meta;
+/* what made a file, each written as a root string attribute when not
+** NULL (out_h5_write_prov, out_h5_write_state) */
+typedef struct h5prov {
+  const char *version;    /* the engine's version (git describe) */
+  const char *build;      /* compiler and flags */
+  const char *command;    /* the command line of the run */
+  const char *params;     /* "name = value" lines: the parameters used */
+  const char *restarted;  /* the checkpoint the run continued from */
+} h5prov;
 
 /* 0 on success; -1 with a message naming the file in err */
 int out_h5_write(const char *path, const particles *ps, const h5meta *meta,
                  char *err, size_t errlen);
+/* the same with the provenance attributes (prov may be NULL) */
+int out_h5_write_prov(const char *path, const particles *ps,
+                      const h5meta *meta, const h5prov *prov, char *err,
+                      size_t errlen);
 
 /*
 ** Checkpoints (ckpt.c) use the same file with other fields and more:
@@ -59,11 +75,12 @@ typedef struct h5blob {
   size_t n;               /* entries */
   void *data;
 } h5blob;
-/* format: the root's "format" attribute (NULL: "mvmpm-snapshot-1") */
+/* format: the root's "format" attribute (NULL: "mvmpm-snapshot-1");
+** prov: the provenance attributes (may be NULL) */
 int out_h5_write_state(const char *path, const char *format,
                        const particles *ps, unsigned flags,
-                       const h5meta *meta, const h5blob *b, int nb,
-                       char *err, size_t errlen);
+                       const h5meta *meta, const h5prov *prov,
+                       const h5blob *b, int nb, char *err, size_t errlen);
 /* as out_h5_read, but the file's "format" must be format (NULL: a
 ** snapshot), and the blobs are read too */
 int out_h5_read_state(const char *path, const char *format, particles *ps,

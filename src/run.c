@@ -4,6 +4,7 @@
 ** row, calls the scene's callbacks, writes snapshots, shows progress, and
 ** honours Ctrl-C.  Nothing here runs inside a step.
 */
+#include <dirent.h>
 #include <errno.h>
 #include <stdlib.h>
 #include <math.h>
@@ -15,10 +16,12 @@
 #include "ckpt.h"
 #include "interrupt.h"
 #include "lcheck.h"
+#include "lmvmpm.h"
 #include "lsim.h"
 #include "out_h5.h"
 #include "prof.h"
 #include "sandbox.h"
+#include "version.h"
 
 static double now(void) {
   struct timespec ts;
@@ -42,6 +45,65 @@ int run_mkdirs(const char *path, char *err, size_t errlen) {
       }
       buf[k] = c;
     }
+  return 0;
+}
+
+/* the names a run writes in its directory (and their .tmp/.part while
+** being written): what --overwrite removes, and nothing else */
+static int run_output_name(const char *n) {
+  static const char *const pre[] = {"particles_", "checkpoint_", "failed_"};
+  char rest[32];
+  size_t k, len;
+  int d;
+  if (strcmp(n, "particles.xmf") == 0 || strcmp(n, "diagnostics.csv") == 0 ||
+      strcmp(n, "diagnostics.csv.part") == 0 ||
+      strcmp(n, "particles.xmf.tmp") == 0)
+    return 1;
+  for (k = 0; k < sizeof pre / sizeof pre[0]; k++) {
+    len = strlen(pre[k]);
+    if (strncmp(n, pre[k], len) != 0) continue;
+    for (d = 0; d < 6; d++)
+      if (n[len + d] < '0' || n[len + d] > '9') break;
+    if (d < 6) continue;
+    snprintf(rest, sizeof rest, "%s", n + len + 6);
+    if (strcmp(rest, ".h5") == 0 || strcmp(rest, ".h5.tmp") == 0) return 1;
+  }
+  return 0;
+}
+
+int run_claim_outdir(const char *dir, int overwrite, char *err,
+                     size_t errlen) {
+  DIR *d = opendir(dir);
+  struct dirent *de;
+  char first[300] = "", path[1400];
+  int n = 0, ck = 0;
+  if (!d) return 0; /* not there yet: made when output starts */
+  while ((de = readdir(d))) {
+    struct stat st;
+    if (!run_output_name(de->d_name)) continue;
+    /* only regular files: a run never writes a link or anything else */
+    snprintf(path, sizeof path, "%s/%s", dir, de->d_name);
+    if (lstat(path, &st) != 0 || !S_ISREG(st.st_mode)) continue;
+    if (!n++) snprintf(first, sizeof first, "%s", de->d_name);
+    ck |= strncmp(de->d_name, "checkpoint_", 11) == 0;
+    if (!overwrite) continue;
+    if (unlink(path) != 0 && errno != ENOENT) {
+      snprintf(err, errlen, "%s: --overwrite cannot remove it (%s)", path,
+               strerror(errno));
+      closedir(d);
+      return -1;
+    }
+  }
+  closedir(d);
+  if (n && !overwrite) {
+    snprintf(err, errlen, "%s holds the outputs of another run (%s%s); give "
+             "--overwrite to remove them (only a run's snapshots, index, "
+             "table, checkpoints and failed states) or another --out%s%s%s",
+             dir, first, n > 1 ? " and more" : "",
+             ck ? ", or --restart " : "", ck ? dir : "",
+             ck ? " to continue it" : "");
+    return -1;
+  }
   return 0;
 }
 
@@ -73,8 +135,57 @@ static void csv_row(lua_State *L, lsim *ls) {
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 
+/* the provenance every output file carries: the strings are pushed on
+** the stack (3 values), where they stay alive until the caller pops */
+void run_provenance(lua_State *L, h5prov *meta) {
+  char *p = lmvmpm_params_text(L);
+  memset(meta, 0, sizeof *meta);
+  meta->version = mvmpm_version;
+  meta->build = mvmpm_build;
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.command");
+  meta->command = lua_tostring(L, -1);
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.restarted");
+  meta->restarted = lua_tostring(L, -1);
+  lua_pushstring(L, p ? p : "");
+  meta->params = lua_tostring(L, -1);
+  free(p);
+}
+
+/* the same as "# name: value" lines for the head of the diagnostics
+** table, pushed as one string (readers skip lines starting with '#') */
+static const char *csv_preamble(lua_State *L) {
+  static const char *const name[] = {"version", "build", "command",
+                                     "restarted_from"};
+  const char *val[4], *p, *nl;
+  h5prov m;
+  luaL_Buffer b;
+  int k;
+  run_provenance(L, &m);
+  val[0] = m.version; val[1] = m.build; val[2] = m.command;
+  val[3] = m.restarted;
+  luaL_buffinit(L, &b);
+  for (k = 0; k < 4; k++)
+    if (val[k]) {
+      luaL_addstring(&b, "# ");
+      luaL_addstring(&b, name[k]);
+      luaL_addstring(&b, ": ");
+      luaL_addstring(&b, val[k]);
+      luaL_addchar(&b, '\n');
+    }
+  luaL_addstring(&b, "# params:\n");
+  for (p = m.params; *p && (nl = strchr(p, '\n')); p = nl + 1) {
+    luaL_addstring(&b, "#   ");
+    luaL_addlstring(&b, p, (size_t)(nl - p + 1));
+  }
+  luaL_pushresult(&b);
+  lua_replace(L, -4);
+  lua_pop(L, 2);
+  return lua_tostring(L, -1);
+}
+
 int run_snapshot(lua_State *L, lsim *ls, const char *path) {
   h5meta meta;
+  h5prov prov;
   char err[512];
   memset(&meta, 0, sizeof meta);
   meta.time = ls->s.t;
@@ -84,11 +195,12 @@ int run_snapshot(lua_State *L, lsim *ls, const char *path) {
   meta.scene = ls->scene;
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   meta.source = lua_tostring(L, -1);
-  if (out_h5_write(path, &ls->s.ps, &meta, err, sizeof err)) {
-    lua_pop(L, 1);
+  run_provenance(L, &prov);
+  if (out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err)) {
+    lua_pop(L, 4);
     return luaL_error(L, "%s", err);
   }
-  lua_pop(L, 1);
+  lua_pop(L, 4);
   return 0;
 }
 
@@ -165,8 +277,10 @@ static void out_start(lua_State *L, lsim *ls) {
   if (ls->csv_every > 0) {
     snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
     csv_check(L, path);
-    if (out_csv_open(&ls->csv, path, cols, NCOLS, err, sizeof err))
+    if (out_csv_open(&ls->csv, path, csv_preamble(L), cols, NCOLS, err,
+                     sizeof err))
       luaL_error(L, "%s", err);
+    lua_pop(L, 1);
     csv_row(L, ls);
   }
   ls->csv_open = 1;
@@ -339,12 +453,101 @@ static void progress(lsim *ls, double t_end, double t0, double wall0,
   fflush(stderr);
 }
 
+/* progress where stderr is no terminal (a batch job, 2>log): a plain
+** line each time the run passes another tenth of its span, or after
+** PLAIN_WALL seconds without one, whichever comes first */
+#define PLAIN_WALL 30.0
+typedef struct plain { double next_t, last_w; } plain;
+
+static void plain_progress(lsim *ls, plain *p, double t_end, double t0,
+                           double wall0, long step0) {
+  double w, span = t_end - t0, rate, eta;
+  if (!isfinite(t_end) || !(span > 0)) return;
+  w = now();
+  /* a tenth reached up to rounding (steps land on output times) */
+  if (ls->s.t < p->next_t - 1e-9 * span && w - p->last_w < PLAIN_WALL) return;
+  while (p->next_t <= ls->s.t + 1e-9 * span) p->next_t += 0.1 * span;
+  p->last_w = w;
+  rate = (ls->s.step - step0) / (w - wall0 + 1e-9);
+  eta = ls->s.t > t0 ? (w - wall0) * (t_end - ls->s.t) / (ls->s.t - t0) : 0;
+  fprintf(stderr, "progress: step %ld  t %.6g / %.6g (%.0f %%)  dt %.3g  "
+          "%.0f steps/s  wall %.1f s  ETA %.0f s\n", ls->s.step, ls->s.t,
+          t_end, 100 * (ls->s.t - t0) / span, ls->s.dt, rate, w - wall0,
+          eta > 0 ? eta : 0);
+  fflush(stderr);
+}
+
+/* the energy budget: warn once when the residual passes warn_residual of
+** the energy scale (the largest of the initial energy, the boundary and
+** thermal work, and the kinetic + strain energy seen so far).  Not in
+** the first WARN_FROM of the run: a scene driven from rest starts with
+** energies near zero, against which any rounding is a large fraction */
+#define WARN_RESIDUAL 0.05
+#define WARN_FROM 0.05
+static void residual_check(lsim *ls, double from) {
+  const sim_energy *e = &ls->s.e;
+  double lim = ls->warn_given ? ls->warn_residual : WARN_RESIDUAL;
+  double scale, r;
+  if (ls->warned || !(lim > 0)) return;
+  if (e->kinetic + e->strain > ls->e_peak) ls->e_peak = e->kinetic + e->strain;
+  scale = ls->e_peak;
+  if (fabs(e->initial) > scale) scale = fabs(e->initial);
+  if (fabs(e->boundary) > scale) scale = fabs(e->boundary);
+  if (fabs(e->thermal) > scale) scale = fabs(e->thermal);
+  r = sim_residual(&ls->s);
+  if (ls->s.t < from || !(scale > 0) || !(fabs(r) > lim * scale)) return;
+  ls->warned = 1;
+  fprintf(stderr, "%smvmpm: warning: %s: the energy budget's residual is %.3g "
+          "at step %ld, t = %g: %.3g %% of the energy scale %.3g, above "
+          "warn_residual = %g (the diagnostics table has the terms)\n",
+          ls->progress && isatty(2) ? "\n" : "",
+          ls->scene[0] ? ls->scene : "sim", r, ls->s.step, ls->s.t,
+          100 * fabs(r) / scale, scale, lim);
+}
+
+/*
+** A guard stopped the step (det F <= 0, a NaN): the particles as they
+** stand go to failed_NNNNNN.h5 (the step number) beside the snapshots,
+** for inspection, and the message says where.  The state is the one the
+** failed step left, part-way through an update.
+*/
+static void failed_state(lua_State *L, lsim *ls) {
+  h5meta meta;
+  h5prov prov;
+  char path[1100], err[512];
+  int r;
+  ls->failed[0] = '\0';
+  if (!ls->csv_open || !ls->outdir[0]) return;
+  snprintf(path, sizeof path, "%s/failed_%06ld.h5", ls->outdir, ls->s.step);
+  sandbox_file(L, path, "output");
+  memset(&meta, 0, sizeof meta);
+  meta.time = ls->s.t;
+  meta.step = ls->s.step;
+  meta.cell = ls->s.g.h;
+  meta.units = ls->units;
+  meta.scene = ls->scene;
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
+  meta.source = lua_tostring(L, -1);
+  run_provenance(L, &prov);
+  r = out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err);
+  lua_pop(L, 4);
+  if (r == 0)
+    snprintf(ls->failed, sizeof ls->failed, "; the state it stopped in is "
+             "%s", path);
+  else
+    snprintf(ls->failed, sizeof ls->failed, "; the state it stopped in "
+             "could not be written (%s)", err);
+}
+
 int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   lsim *ls = lsim_check(L, simidx);
   sim *s = &ls->s;
   double t0 = s->t, wall0 = now();
   long step0 = s->step, k = 0;
   int show = ls->progress && isatty(2);
+  int quietly = ls->progress && !isatty(2);
+  plain pl;
+  double warn_from;
   simidx = lua_absindex(L, simidx);
   if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
   if (!ls->advised) { /* now that the bodies (fields) are known */
@@ -361,6 +564,9 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   }
   if (isfinite(t_end)) run_check(L, simidx, ls, t_end);
   out_start(L, ls);
+  pl.next_t = t0 + 0.1 * (t_end - t0);
+  warn_from = isfinite(t_end) ? t0 + WARN_FROM * (t_end - t0) : t0;
+  pl.last_w = wall0;
   prof_start(s->prof);
   /* t_end = HUGE_VAL (sim:step) would make the tolerance inf - inf = NaN */
   while ((max_steps < 0 || k < max_steps) &&
@@ -372,8 +578,12 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     /* the temperature at the end of the coming step */
     if (ls->tempfn) s->temp = lsim_temperature_at(L, simidx, s->t + sim_next_dt(s));
     prof_mark(s->prof, PROF_DIAG);
-    if (sim_step(s)) luaL_error(L, "%s", s->err);
+    if (sim_step(s)) {
+      failed_state(L, ls);
+      luaL_error(L, "%s%s", s->err, ls->failed);
+    }
     k++;
+    if (ls->csv_open) residual_check(ls, warn_from);
     if (ls->csv_open && ls->csv_every > 0 && s->step % ls->csv_every == 0) csv_row(L, ls);
     if (ls->nevery) callbacks(L, simidx, ls);
     prof_mark(s->prof, PROF_DIAG);
@@ -388,6 +598,8 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
       ckpt_write(L, simidx);
     }
     if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 0);
+    else if (quietly && max_steps < 0)
+      plain_progress(ls, &pl, t_end, t0, wall0, step0);
     prof_mark(s->prof, PROF_OUTPUT);
     if (interrupt_pending()) {
       interrupt_clear();

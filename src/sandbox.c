@@ -225,6 +225,11 @@ const char *sandbox_path(lua_State *L, const char *path, const char *what,
   ** would be the absolute /path */
   if (n == 0)
     luaL_error(L, "%s: no output directory is set under --sandbox", what);
+  /* a name built from sim.outdir (the root itself) means the same file
+  ** as the name below it */
+  if (strncmp(path, root, n) == 0 && root[n - 1] != '/' && path[n] == '/' &&
+      path[n + 1])
+    path += n + 1;
   if (!path[0] || path[0] == '/')
     luaL_error(L, "%s: path '%s' is not allowed under --sandbox (give a "
                "relative path; files go inside the output directory %s)",

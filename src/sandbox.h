@@ -11,7 +11,11 @@
 **   mvmpm.load (it reads any file) is refused;
 **   paths given to sim:snapshot, sim:render, mvmpm.plot and
 **   sim:output{dir} must be relative and free of "..": they name files
-**   inside the output directory (sandbox_path);
+**   inside the output directory (sandbox_path; a path that starts with
+**   the directory itself, as sim.outdir .. "/name" does, names the file
+**   below it);
+**   mvmpm.open(name) writes a file there (through name.part, renamed
+**   when closed), the sandbox's way to write tables;
 **   no symbolic link inside the output directory is followed: a file
 **   whose path below the root holds one is refused (sandbox_file);
 **   the sandbox is recorded in checkpoints and a restart applies it.

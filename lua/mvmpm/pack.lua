@@ -593,10 +593,11 @@ function M.summary(bed)
 end
 
 -- write PREFIX_grains.csv (one row per disc), PREFIX_sizes.csv (the
--- histogram) and PREFIX_stats.csv (name,value)
+-- histogram) and PREFIX_stats.csv (name,value); through mvmpm.open, so
+-- also under --sandbox (inside the output directory)
 function M.write_csv(bed, prefix)
   local function open(name)
-    local f, err = io.open(prefix .. name, "w")
+    local f, err = require("mvmpm").open(prefix .. name)
     if not f then error("pack.write_csv: " .. err, 3) end
     return f
   end

@@ -195,8 +195,9 @@ end
 -- The monitor: per step, the forces of the sides and the attached
 -- cylinders (averaged over each sample); per sample, spins, energies,
 -- invariants; files when the run writes output (sim.outdir set).
+-- (mvmpm.open writes path.part and renames it on close, also sandboxed)
 local function csv_write(path, header, rows)
-  local f = assert(io.open(path .. ".part", "w"))
+  local f = assert(mvmpm.open(path))
   f:write(table.concat(header, ","), "\n")
   for _, r in ipairs(rows) do
     local s = {}
@@ -206,8 +207,7 @@ local function csv_write(path, header, rows)
     end
     f:write(table.concat(s, ","), "\n")
   end
-  f:close()
-  assert(os.rename(path .. ".part", path))
+  assert(f:close())
 end
 
 -- nearest-image separation along the periodic y
@@ -598,7 +598,7 @@ function M.report(mon, dir)
                 title = string.format("Debonding (bond strength %g)", P.bond),
                 series = {{x = mon.strain, y = d}}}
   end
-  local f = assert(io.open(dir .. "/summary.txt", "w"))
+  local f = assert(mvmpm.open(dir .. "/summary.txt"))
   local keys = {}
   for k in pairs(s) do keys[#keys + 1] = k end
   table.sort(keys)

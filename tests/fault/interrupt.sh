@@ -27,7 +27,8 @@ ok $? "the unfinished table stays diagnostics.csv.part"
 ok $? "the run continues from it"
 cmp -s ref/fields.txt run/fields.txt
 ok $? "particle fields and state at t_end match the uninterrupted run bit for bit"
-cmp -s ref/diagnostics.csv run/diagnostics.csv
+# the rows; the "#" head differs in the command line (--out)
+cmp -s <(grep -v "^#" ref/diagnostics.csv) <(grep -v "^#" run/diagnostics.csv)
 ok $? "diagnostics.csv matches" "$(wc -l <ref/diagnostics.csv) rows"
 cmp -s ref/particles.xmf run/particles.xmf
 ok $? "particles.xmf matches"

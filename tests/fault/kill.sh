@@ -48,6 +48,7 @@ ok $? "the run continues from its newest checkpoint to the end"
 cmp -s ref/fields.txt run/fields.txt
 ok $? "the run killed four times ends bit for bit like the uninterrupted one" \
    "$midwrite of 4 kills landed while a checkpoint was being written"
-cmp -s ref/diagnostics.csv run/diagnostics.csv
+# the rows; the "#" head differs in the command line (--out)
+cmp -s <(grep -v "^#" ref/diagnostics.csv) <(grep -v "^#" run/diagnostics.csv)
 ok $? "and so does its diagnostics table"
 finish

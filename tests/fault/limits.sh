@@ -10,6 +10,7 @@ cd "$tmp"
 run() { timeout 20 "$bin" "$@" >out.txt 2>&1; }
 # scene SIM-EXTRA MATERIAL BODY-EXTRA TAIL: a disk in a box; line 5 is TAIL
 scene() {
+  rm -rf o # each case is a new run (a directory holding one is refused)
   cat >s.lua <<EOF
 local mvmpm = require "mvmpm"
 local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, t_end = 0.05${1-}}

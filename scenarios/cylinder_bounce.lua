@@ -5,6 +5,9 @@
 -- 10 time units apart, instead of hitting corners.
 --
 --   mvmpm run scenarios/cylinder_bounce.lua --set friction=0.1
+--
+-- The scheme (shape, update, transfer, flip) is the engine's default
+-- unless set: "default" passes nothing to mvmpm.sim.
 local mvmpm = require "mvmpm"
 
 local P = mvmpm.params {
@@ -12,25 +15,26 @@ local P = mvmpm.params {
   cells = 8,           -- cells across the diameter
   ppc = 2,             -- particles per cell per direction
   t_end = 32,          -- three impacts
-  flip = 1.0,          -- FLIP fraction (0 = PIC)
+  flip = -1,           -- FLIP fraction (0 = PIC); -1: the default
   cfl = 0.25,
-  update = "musl",
-  shape = "linear",
-  transfer = "flip",   -- or "apic" (with shape gimp or bspline2), "xpic"
+  update = "default",  -- or "usl", "musl", "usavg"
+  shape = "default",   -- or "linear", "gimp", "bspline2"
+  transfer = "default", -- or "flip", "apic" (gimp or bspline2), "xpic"
   xpic = 2,            -- XPIC's order (2 or 3)
   separation = true,   -- contact only once surfaces meet
   wall_contact = "node", -- or "patch": the wall acts per contact patch
 }
 
 local h = 1 / P.cells
+local function opt(v) if v ~= "default" and v ~= -1 then return v end end
 local sim = mvmpm.sim {
   domain = {x = {0, 3}, y = {0, 3}},
   cell = h,
   ppc = P.ppc,
-  shape = P.shape,
-  update = P.update,
-  flip = P.flip,
-  transfer = P.transfer,
+  shape = opt(P.shape),
+  update = opt(P.update),
+  flip = opt(P.flip),
+  transfer = opt(P.transfer),
   xpic = P.xpic,
   cfl = P.cfl,
   t_end = P.t_end,

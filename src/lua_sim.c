@@ -210,7 +210,7 @@ int lsim_new(lua_State *L) {
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
       "wall_remap", "wall_contact", "normals", "normal_window", "contact_gap",
       "xpic", NULL};
-  static const char *const updates[] = {"usl", "musl", NULL};
+  static const char *const updates[] = {"usl", "musl", "usavg", NULL};
   static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
@@ -870,7 +870,9 @@ static int lindex(lua_State *L) {
     setnum(L, "grid", (double)grid_mem(&s->g));
   }
   else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
-  else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL ? "musl" : "usl");
+  else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL    ? "musl"
+                                          : s->update == UPDATE_USAVG ? "usavg"
+                                                                      : "usl");
   else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);
   else if (strcmp(k, "transfer") == 0)
     lua_pushstring(L, s->transfer == TRANSFER_APIC ? "apic"

@@ -9,19 +9,26 @@
 ** sum_p V_p grad S_ip (sv, which bonds then need not gather again).  One
 ** of the two, so a scene pays for the one it uses; "plane" also gathers
 ** the particles' moments about the node (grid.h).
+**
+** USAVG (usf.c) splits the scatter in two: mass and momentum first, then
+** the forces of the stresses its first half-step update gave (p2g_force).
 */
 #include "sim.h"
 #include "bands.h"
 #include "par.h"
 #include "stencil.h"
 
+/* what a scatter adds: everything, or (USAVG) all but the forces, or
+** the forces alone */
+enum { P2G_ALL, P2G_MASS, P2G_FORCE };
+
 /*
 ** The scatter of particles [i0, i1) (part blk of the bands plan).
 ** split: only the node rows this pass writes (bands.h); otherwise all.
 */
 STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
-                             const int apic, const int split, size_t i0,
-                             size_t i1, int blk, int pass) {
+                             const int apic, const int split, const int what,
+                             size_t i0, size_t i1, int blk, int pass) {
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
@@ -33,7 +40,8 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
   const int byvol = s->normals != NORMALS_MASS;
   double *const *sgrad = byvol ? g->sv : g->sg;
-  const int plane = shared && s->normals == NORMALS_PLANE;
+  const int plane = what != P2G_FORCE && shared && s->normals == NORMALS_PLANE;
+  const int mass = what != P2G_FORCE, force = what != P2G_MASS;
   const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
   double r[DIM][STENCIL_MAX];
   unsigned char mine[SHAPE_MAXW];
@@ -58,31 +66,38 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     if (split &&
         !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
       continue;
-    if (apic || plane) stencil_eval_r(&geo, kind, x, lp, &st, r);
+    if ((apic && mass) || plane) stencil_eval_r(&geo, kind, x, lp, &st, r);
     else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k];
       double wm = w * mp, vx = vx0, vy = vy0;
       if (split && !mine[k / nw]) continue;
-      if (apic) { /* the particle's affine velocity at the node */
+      if (apic && mass) { /* the particle's affine velocity at the node */
         vx += c00[i] * r[0][k] + c01[i] * r[1][k];
         vy += c10[i] * r[0][k] + c11[i] * r[1][k];
       }
       double fx = wm * gx - (sxx * dx + sxy * dy);
       double fy = wm * gy - (sxy * dx + syy * dy);
-      gm[n] += wm;
-      gpx[n] += wm * vx;
-      gpy[n] += wm * vy;
-      gfx[n] += fx;
-      gfy[n] += fy;
+      if (mass) {
+        gm[n] += wm;
+        gpx[n] += wm * vx;
+        gpy[n] += wm * vy;
+      }
+      if (force) {
+        gfx[n] += fx;
+        gfy[n] += fy;
+      }
       if (shared && g->head[n] >= 0) {
         int32_t sl = grid_slot(g, n, f);
+        if (force) {
+          g->sf[0][sl] += fx;
+          g->sf[1][sl] += fy;
+        }
+        if (!mass) continue;
         g->sm[sl] += wm;
         g->sp[0][sl] += wm * vx;
         g->sp[1][sl] += wm * vy;
-        g->sf[0][sl] += fx;
-        g->sf[1][sl] += fy;
         sgrad[0][sl] += wg * dx;
         sgrad[1][sl] += wg * dy;
         if (plane) { /* moments of r / h, weighted w V */
@@ -100,15 +115,25 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   }
 }
 
-STENCIL_INLINE void p2g_split(sim *s, const int kind, const int split,
-                              size_t i0, size_t i1, int blk, int pass) {
+STENCIL_INLINE void p2g_what(sim *s, const int kind, const int split,
+                             const int what, size_t i0, size_t i1, int blk,
+                             int pass) {
   int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
   if (shared) {
-    if (apic) p2g_kind(s, kind, 1, 1, split, i0, i1, blk, pass);
-    else p2g_kind(s, kind, 1, 0, split, i0, i1, blk, pass);
+    if (apic) p2g_kind(s, kind, 1, 1, split, what, i0, i1, blk, pass);
+    else p2g_kind(s, kind, 1, 0, split, what, i0, i1, blk, pass);
   } else {
-    if (apic) p2g_kind(s, kind, 0, 1, split, i0, i1, blk, pass);
-    else p2g_kind(s, kind, 0, 0, split, i0, i1, blk, pass);
+    if (apic) p2g_kind(s, kind, 0, 1, split, what, i0, i1, blk, pass);
+    else p2g_kind(s, kind, 0, 0, split, what, i0, i1, blk, pass);
+  }
+}
+
+STENCIL_INLINE void p2g_split(sim *s, const int kind, const int split,
+                              size_t i0, size_t i1, int blk, int pass) {
+  switch (s->p2g_what) {
+  case P2G_MASS: p2g_what(s, kind, split, P2G_MASS, i0, i1, blk, pass); break;
+  case P2G_FORCE: p2g_what(s, kind, split, P2G_FORCE, i0, i1, blk, pass); break;
+  default: p2g_what(s, kind, split, P2G_ALL, i0, i1, blk, pass);
   }
 }
 
@@ -136,8 +161,13 @@ void p2g_plan(sim *s) {
   bands_plan(&s->bands, s->par, &s->g, s->shape, s->ps.x[BANDS_DIM], s->ps.n);
 }
 
-void p2g(sim *s) {
+static void p2g_run(sim *s, int what) {
+  s->p2g_what = what;
   if (s->bands.nb) bands_run(&s->bands, s->par, p2g_span, s);
   else
     p2g_range(s, 0, 0, s->ps.n, 0, 1);
 }
+
+void p2g(sim *s) { p2g_run(s, s->update == UPDATE_USAVG ? P2G_MASS : P2G_ALL); }
+
+void p2g_force(sim *s) { p2g_run(s, P2G_FORCE); }

@@ -57,7 +57,10 @@ void prof_effects(FILE *f, const sim *s) {
   effect(f, "APIC", s->transfer == TRANSFER_APIC, NULL);
   effect(f, "gravity", grav, NULL);
   fprintf(f, "  %-22s %s, %s, %d particles per cell, flip %g\n", "scheme",
-          s->update == UPDATE_MUSL ? "MUSL" : "USL", shape_names[s->shape],
+          s->update == UPDATE_MUSL    ? "MUSL"
+          : s->update == UPDATE_USAVG ? "USAVG"
+                                      : "USL",
+          shape_names[s->shape],
           s->ppc, s->flip);
   fprintf(f, "  %-22s %d (results do not depend on it)", "threads",
           par_threads(s->par));

@@ -20,7 +20,11 @@
 #include "par.h"
 
 enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
-enum update_kind { UPDATE_USL, UPDATE_MUSL };
+/* the velocity gradient the stresses are updated with: the updated grid
+** velocity (USL), the updated particle velocities mapped back (MUSL), or
+** half of the step with the grid velocity at its start and half with
+** MUSL's at its end (USAVG, usf.c) */
+enum update_kind { UPDATE_USL, UPDATE_MUSL, UPDATE_USAVG };
 /* MUSL's remap at the walls (boundary_remap): auto holds them with
 ** gravity on */
 enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
@@ -89,6 +93,7 @@ typedef struct sim {
   particles ps;
   int shape;         /* enum shape_kind */
   int update;        /* enum update_kind */
+  int p2g_what;      /* p2g.c: what its scatter now adds */
   double flip;       /* FLIP fraction of the velocity update, 0 = PIC */
   int transfer;      /* enum transfer_kind */
   int xpic;          /* XPIC: its order m, 2 or 3 (xpic.c) */
@@ -197,8 +202,9 @@ int sim_step(sim *s);
 /* the step the CFL rule gives now */
 double sim_stable_dt(const sim *s);
 /* a warning about the scheme the scene chose, or NULL: linear hats under
-** pure FLIP (the defaults) with walls or contact, whose energy error on
-** an impact grows as the grid is refined (docs/accuracy.md) */
+** pure FLIP (any update), or GIMP under pure FLIP and MUSL, with walls or
+** contact, whose energy error on impacts grows as the grid is refined
+** (docs/accuracy.md) */
 const char *sim_advice(const sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
@@ -229,7 +235,11 @@ void p2g_plan(sim *s);         /* p2g.c: the scatter plan of the step
                                   (bands.h), before marking and p2g */
 int p2g_mark(sim *s);          /* mark.c: shared nodes and their slots;
                                   0 or -1 (out of memory) */
-void p2g(sim *s);              /* p2g.c: mass, momentum, force */
+void p2g(sim *s);              /* p2g.c: mass, momentum, force (USAVG:
+                                  mass and momentum) */
+void p2g_force(sim *s);        /* p2g.c: the forces alone (USAVG) */
+int usf(sim *s);               /* usf.c: USAVG's first half update; 0 or
+                                  -1 with s->err */
 void solve_momentum(sim *s);   /* solve.c: q = p + dt f */
 void solve_velocity(sim *s);   /* solve.c: q -> vL, f -> dv */
 void xpic(sim *s);             /* xpic.c: f -> the XPIC(m) correction c */
@@ -254,7 +264,8 @@ int sim_wall_hold(const sim *s);
 void g2p(sim *s);              /* g2p.c: velocities; USL: positions, grad v;
                                   MUSL: momenta back to the grid */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */
-int constitutive(sim *s);      /* sim.c: each material's update */
+int constitutive(sim *s, double dt); /* sim.c: each material's update
+                                  over dt */
 void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */
 
 #endif

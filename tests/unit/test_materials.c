@@ -292,7 +292,7 @@ static void thermal_confined(void) {
     s.dt = 1e-3;
     sim_prepare(&s); /* the phases' buffers, before any phase */
     thermal(&s);
-    constitutive(&s);
+    constitutive(&s, s.dt);
     UNIT_NEAR(s.ps.s[S_XX][0] / p, 1, 1e-14, k ? "confined heating (plastic): sxx / -3K alpha dT"
                                                : "confined heating: sxx / -3K alpha dT");
     UNIT_NEAR(s.ps.s[S_YY][0] / p, 1, 1e-14, "confined heating: syy / -3K alpha dT");
@@ -333,7 +333,7 @@ static void thermal_free_strain(void) {
     thermal_uniform(&s, n);
     thermal(&s);
     s.ps.L[0][0] = r; s.ps.L[3][0] = r;
-    constitutive(&s);
+    constitutive(&s, s.dt);
   }
   UNIT_NEAR(s.ps.s[S_XX][0], 0, 1e-15, "free in-plane strain (1+nu) alpha dT: sxx");
   UNIT_NEAR(s.ps.s[S_YY][0], 0, 1e-15, "free in-plane strain (1+nu) alpha dT: syy");

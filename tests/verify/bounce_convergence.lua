@@ -1,15 +1,20 @@
 -- The frictionless bouncing disc (scenarios/cylinder_bounce.lua) refined:
--- 8, 16 and 32 cells across the diameter, per transfer scheme.  Walls do
--- no work, so the energy after three impacts (t = 36) should equal the
--- discrete initial energy, better the finer the grid.  Error: E/E0 - 1;
--- observed order: log2 of the error's ratio between resolutions.
--- Restitution: -vx after the first impact / vx before (t = 10).
+-- 8, 16 and 32 cells across the diameter, per scheme.  Walls do no work,
+-- so the energy after three impacts (t = 36) should equal the discrete
+-- initial energy, better the finer the grid.  Error: E/E0 - 1; observed
+-- order: log2 of the error's ratio between resolutions.  Restitution:
+-- -vx after the first impact / vx before (t = 10).
 --
--- Linear hats under pure FLIP (the defaults) gain energy as the grid is
--- refined (cell crossing: each particle crossing a cell edge sees the
--- hats' gradient jump, and FLIP keeps the noise that makes); that scheme
--- must carry the load-time warning (sim.advice).  GIMP and B-splines
--- under FLIP are held to the accuracy the docs state (docs/accuracy.md).
+-- The goal for the default scheme: |error| <= 2 %, 1 %, 0.5 % at 8, 16,
+-- 32 cells, falling, and restitution >= 0.9 at 16 cells.  No scheme
+-- meets all of it (docs/accuracy.md); what each misses is printed as
+-- info with the measured number.  The defaults (linear hats, MUSL,
+-- FLIP) gain energy in free flight as the grid is refined and carry the
+-- load-time warning (sim.advice).  USAVG (update = "usavg") removes most
+-- of that gain; GIMP under USAVG is the scheme whose error falls 8 -> 16
+-- -> 32 cells, and what it holds is asserted.  GIMP and B-splines under
+-- MUSL and XPIC are kept for comparison (GIMP MUSL's growth beyond 16
+-- cells is in studies/bounce.lua).
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
@@ -25,48 +30,89 @@ local function bounce(o, cells)
   return sim:energy().total / e0 - 1, e1, sim
 end
 
-local function study(name, o)
+local function study(name, o, sizes)
   local r = {}
-  for _, c in ipairs({8, 16, 32}) do
+  sizes = sizes or {8, 16, 32}
+  for _, c in ipairs(sizes) do
     local d, e, sim = bounce(o, c)
     r[c] = {d = d, e = e, sim = sim}
     V.info(string.format("%s, %d cells: energy change E/E0 - 1", name, c), d)
     V.info(string.format("%s, %d cells: restitution, impact 1", name, c), e)
   end
-  V.info(name .. ": observed order 8 -> 16", math.log(math.abs(r[8].d) / math.abs(r[16].d), 2))
-  V.info(name .. ": observed order 16 -> 32", math.log(math.abs(r[16].d) / math.abs(r[32].d), 2))
+  for k = 2, #sizes do
+    local a, b = sizes[k - 1], sizes[k]
+    V.info(string.format("%s: observed order %d -> %d", name, a, b),
+      math.log(math.abs(r[a].d) / math.abs(r[b].d), 2))
+  end
   return r
 end
 
-V.case "linear hats, FLIP (the defaults)"
-local lin = study("linear FLIP", {})
-V.holds("the defaults are linear hats under pure FLIP",
-  lin[8].sim.shape == "linear" and lin[8].sim.transfer == "flip" and lin[8].sim.flip == 1)
--- a scheme whose energy error grows with refinement must say so at load
-local grows = math.abs(lin[32].d) > math.abs(lin[16].d)
-V.holds("error grows 16 -> 32 cells only with the warning given",
-  not grows or lin[32].sim.advice ~= nil, lin[32].d)
+-- the goal: printed as met or not, with the measured number
+local function goal(r, name)
+  local lim = {[8] = 0.02, [16] = 0.01, [32] = 0.005}
+  for _, c in ipairs({8, 16, 32}) do
+    V.info(string.format("%s, goal |E/E0 - 1| <= %g at %d cells: %s", name,
+      lim[c], c, math.abs(r[c].d) <= lim[c] and "met" or "NOT met"), r[c].d)
+  end
+  V.info(string.format("%s, goal restitution >= 0.9 at 16 cells: %s", name,
+    r[16].e >= 0.9 and "met" or "NOT met"), r[16].e)
+end
 
-V.case "GIMP, FLIP"
-local gimp = study("GIMP FLIP", {shape = "gimp"})
-V.holds("no warning for GIMP", gimp[8].sim.advice == nil)
+V.case "the defaults: linear hats, MUSL, FLIP"
+local def = study("defaults", {})
+local s8 = def[8].sim
+V.holds("the defaults are linear hats, MUSL, pure FLIP",
+  s8.shape == "linear" and s8.update == "musl" and s8.transfer == "flip" and s8.flip == 1)
+goal(def, "defaults")
+-- a scheme whose energy error grows with refinement must say so at load
+local grows = math.abs(def[32].d) > math.abs(def[16].d)
+V.holds("error grows 16 -> 32 cells only with the warning given",
+  not grows or def[32].sim.advice ~= nil, def[32].d)
+
+V.case "linear hats, USAVG, FLIP: the free-flight gain removed"
+local lu = study("linear USAVG", {update = "usavg"})
+goal(lu, "linear USAVG")
+V.holds("update = \"usavg\" is taken", lu[8].sim.update == "usavg")
+V.below("|energy change|, 16 cells", math.abs(lu[16].d), 0.02)
+V.below("|energy change|, 32 cells", math.abs(lu[32].d), 0.02)
+-- MUSL's gain at 32 cells is made between impacts; USAVG's symmetric
+-- step keeps a tenth of it at most
+V.below("|energy change| at 32 cells, USAVG / MUSL", math.abs(lu[32].d) / math.abs(def[32].d), 0.1)
+-- linear hats still gain a little per cell crossed (+1.4 % at 32, +3.3 %
+-- at 48 cells): the warning stays
+V.holds("error grows 16 -> 32 cells only with the warning given",
+  math.abs(lu[32].d) <= math.abs(lu[16].d) or lu[32].sim.advice ~= nil, lu[32].d)
+
+V.case "GIMP, USAVG, FLIP: the closest to the goal"
+local gu = study("GIMP USAVG", {shape = "gimp", update = "usavg"})
+goal(gu, "GIMP USAVG")
+V.holds("no warning for GIMP under USAVG", gu[8].sim.advice == nil)
+V.below("error falls 8 -> 16 cells", math.abs(gu[16].d), math.abs(gu[8].d))
+V.below("error falls 16 -> 32 cells", math.abs(gu[32].d), math.abs(gu[16].d))
+V.below("|energy change|, 32 cells", math.abs(gu[32].d), 0.01)
+V.above("restitution at 16 cells", gu[16].e, 0.9)
+V.above("restitution at 32 cells", gu[32].e, 0.9)
+
+V.case "GIMP, MUSL, FLIP"
+local gimp = study("GIMP MUSL", {shape = "gimp", update = "musl"}, {8, 16})
+V.holds("the warning for GIMP under MUSL (grows from 16 cells)",
+  gimp[8].sim.advice ~= nil)
 V.below("|energy change|, 8 cells", math.abs(gimp[8].d), 0.02)
 V.below("|energy change|, 16 cells", math.abs(gimp[16].d), 0.01)
-V.below("|energy change|, 32 cells (grows again: cell-crossing remnant)", math.abs(gimp[32].d), 0.04)
 V.above("restitution at 16 cells", gimp[16].e, 0.9)
-V.above("restitution at 32 cells", gimp[32].e, 0.9)
 
-V.case "B-splines, FLIP"
-local bsp = study("B-spline FLIP", {shape = "bspline2"})
+V.case "B-splines, MUSL, FLIP"
+local bsp = study("B-spline MUSL", {shape = "bspline2", update = "musl"})
 V.holds("no warning for B-splines", bsp[8].sim.advice == nil)
 V.below("error falls 8 -> 16 cells", math.abs(bsp[16].d), math.abs(bsp[8].d))
 V.below("error falls 16 -> 32 cells", math.abs(bsp[32].d), math.abs(bsp[16].d))
 V.below("|energy change|, 32 cells", math.abs(bsp[32].d), 0.01)
 V.above("restitution at 32 cells", bsp[32].e, 0.9)
 
-V.case "XPIC(2), GIMP: noise removed, vibration damped"
-local x8, xe8 = bounce({shape = "gimp", transfer = "xpic"}, 8)
-local x16, xe16, xs = bounce({shape = "gimp", transfer = "xpic"}, 16)
+V.case "XPIC(2), GIMP, MUSL: noise removed, vibration damped"
+local xo = {shape = "gimp", update = "musl", transfer = "xpic"}
+local x8, xe8 = bounce(xo, 8)
+local x16, xe16, xs = bounce(xo, 16)
 V.holds("transfer = \"xpic\" is taken", xs.transfer == "xpic")
 V.info("XPIC(2) GIMP, 8 cells: energy change", x8)
 V.info("XPIC(2) GIMP, 16 cells: energy change", x16)

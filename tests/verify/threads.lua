@@ -58,6 +58,8 @@ same("plastic onto viscoelastic, periodic, gravity, friction, USL",
   "tests/verify/scenes/threads_mix.lua", {update = "usl", shape = "linear"}, 45)
 same("the same, MUSL with uGIMP and APIC", "tests/verify/scenes/threads_mix.lua",
   {shape = "gimp", transfer = "apic"}, 45)
+same("the same, USAVG with uGIMP (stresses first and last)",
+  "tests/verify/scenes/threads_mix.lua", {update = "usavg", shape = "gimp"}, 45)
 same("frictional grains pressed by a driven plate, walls, gravity",
   "tests/verify/scenes/threads_grains.lua", {}, 45)
 -- cooled fast, the disc lets go of the annulus within the run: cuts in

@@ -1,0 +1,110 @@
+/*
+** usf.c - the first half of USAVG's stress update ("update stress first
+** and last").  MUSL and USL update the stresses once, after the grid
+** step, with the velocity at its end: a step is then a kick followed by
+** a drift (symplectic Euler), which is not symmetric in time.  When the
+** operator the grid makes changes from step to step (particles crossing
+** cells), that asymmetry leaves an energy drift in free flight which
+** grows with the number of cells crossed.  USAVG splits the update:
+**   sigma <- sigma + C : (dt/2) D(v_i^n)        here, before the forces
+**   sigma <- sigma + C : (dt/2) D(v_i^n+1)      after g2p (MUSL's remap)
+** with v_i^n = p_i / m_i the velocity the particles map to the grid at
+** the start of the step and D the particles' rate of deformation from
+** the step's weights.  The step is then drift, kick, drift (a Stormer-
+** Verlet step): symmetric in time, with the stresses and velocities at
+** its end at the same time level (sim.c drops the lag term).
+**
+** The cost: one gather of the velocity gradient, one constitutive
+** update and a second scatter (the forces, p2g_force) per step.
+*/
+#include "sim.h"
+#include "par.h"
+#include "stencil.h"
+
+/* v_i = p_i / m_i into q (which solve_momentum overwrites next), for
+** entries [i0, i1) of one field table */
+static void velocity(size_t i0, size_t i1, const double *m,
+                     double *const p[DIM], double *const q[DIM]) {
+  size_t i;
+  int d;
+  for (i = i0; i < i1; i++) {
+    double inv = m[i] > 0 ? 1.0 / m[i] : 0.0;
+    for (d = 0; d < DIM; d++) q[d][i] = p[d][i] * inv;
+  }
+}
+
+static void velocity_part(void *arg, int t, int nparts) {
+  grid *g = arg;
+  size_t i0, i1;
+  par_range(g->nnodes, t, nparts, &i0, &i1);
+  velocity(i0, i1, g->m, g->p, g->q);
+  par_range(g->nslot, t, nparts, &i0, &i1);
+  velocity(i0, i1, g->sm, g->sp, g->sq);
+}
+
+/* L_p = sum_i v_i (x) grad S_ip, each particle from its own field */
+STENCIL_INLINE void gradient_kind(sim *s, const int kind, const int shared,
+                                  size_t i0, size_t i1) {
+  const grid *g = &s->g;
+  particles *ps = &s->ps;
+  const body *bd = s->bodies;
+  const double lp = s->lp;
+  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
+  stencil_geo geo;
+  stencil st;
+  size_t i;
+  stencil_geo_init(&geo, g);
+  for (i = i0; i < i1; i++) {
+    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
+    double l00 = 0, l01 = 0, l10 = 0, l11 = 0;
+    int32_t f = bd[ps->body[i]].field;
+    int k;
+    stencil_eval(&geo, kind, x, lp, &st);
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      double dx = st.dw[0][k], dy = st.dw[1][k], qx, qy;
+      if (shared && g->head[n] >= 0) {
+        int32_t sl = grid_slot(g, n, f);
+        qx = g->sq[0][sl]; qy = g->sq[1][sl];
+      } else {
+        qx = gqx[n]; qy = gqy[n];
+      }
+      l00 += qx * dx; l01 += qx * dy;
+      l10 += qy * dx; l11 += qy * dy;
+    }
+    ps->L[0][i] = l00; ps->L[1][i] = l01;
+    ps->L[2][i] = l10; ps->L[3][i] = l11;
+  }
+}
+
+static void gradient_range(sim *s, size_t i0, size_t i1) {
+  int shared = s->g.nshared > 0;
+#define GRAD(K)                                                          \
+  if (shared) gradient_kind(s, K, 1, i0, i1);                            \
+  else gradient_kind(s, K, 0, i0, i1);
+  switch (s->shape) {
+  case SHAPE_GIMP: GRAD(SHAPE_GIMP) break;
+  case SHAPE_BSPLINE2: GRAD(SHAPE_BSPLINE2) break;
+  default: GRAD(SHAPE_LINEAR)
+  }
+#undef GRAD
+}
+
+static void gradient_part(void *arg, int t, int nparts) {
+  sim *s = arg;
+  size_t i0, i1;
+  par_range(s->ps.n, t, nparts, &i0, &i1);
+  gradient_range(s, i0, i1);
+}
+
+int usf(sim *s) {
+  par_run(s->par, velocity_part, &s->g);
+  /* where MUSL's remap holds the walls (gravity on), this velocity too,
+  ** at the nodes where a wall acted in the last step: otherwise a body
+  ** resting on a floor is pumped as boundary.c describes */
+  if (sim_wall_hold(s)) boundary_normal_set(s, s->g.q, s->g.sq, 1);
+  par_run(s->par, gradient_part, s);
+  if (constitutive(s, 0.5 * s->dt)) return -1;
+  p2g_force(s);
+  return 0;
+}

@@ -490,10 +490,10 @@ static void residual_check(lsim *ls, double from) {
   double scale, r;
   if (ls->warned || !(lim > 0)) return;
   if (e->kinetic + e->strain > ls->e_peak) ls->e_peak = e->kinetic + e->strain;
-  scale = ls->e_peak;
-  if (fabs(e->initial) > scale) scale = fabs(e->initial);
-  if (fabs(e->boundary) > scale) scale = fabs(e->boundary);
-  if (fabs(e->thermal) > scale) scale = fabs(e->thermal);
+  /* the budget's scale (no choice of origin changes it, as the initial
+  ** energy's potential would), or the peak of kinetic + strain if more */
+  scale = sim_scale(&ls->s);
+  if (ls->e_peak > scale) scale = ls->e_peak;
   r = sim_residual(&ls->s);
   if (ls->s.t < from || !(scale > 0) || !(fabs(r) > lim * scale)) return;
   ls->warned = 1;

@@ -137,5 +137,10 @@ int run_mkdirs(const char *path, char *err, size_t errlen);
 /* flush the diagnostics table to disk; its length in bytes, -1 if none */
 long run_sync(lua_State *L, lsim *ls);
 int run_snapshot(lua_State *L, lsim *ls, const char *path);
+/* the domain and the bodies' names and driven flags for a snapshot or a
+** checkpoint (out_h5.h); 0, or -1 if out of memory.  Release with
+** out_h5_frame_free (also after a failure). */
+struct h5frame;
+int run_frame(const sim *s, struct h5frame *fr);
 
 #endif

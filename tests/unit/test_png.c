@@ -543,7 +543,7 @@ static void test_plot(void) {
 /* the render command on a snapshot: same picture as the renderer */
 static void test_render_cmd(void) {
   particles ps;
-  h5meta meta = {1.5, 10, 0.1, "nondimensional", "t.lua", NULL};
+  h5meta meta = {.time = 1.5, .step = 10, .cell = 0.1, .units = "nondimensional", .scene = "t.lua", .source = NULL};
   render_opts o = unit_square("body", 400);
   render_layout L;
   canvas c;

@@ -475,8 +475,9 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
                 size_t errlen) {
   render_layout L;
   double *v = NULL, lx, ly;
-  char buf[128], ext[4][64], xt[80], yt[80];
+  char buf[128], ext[4][64], xt[80], yt[80], barlab[64];
   int kind, s, m, lh, top, panel, dw, dh, k, y, labw = 0, x, left, bottom;
+  int barpx, barw, barrow;
   int legend[MAXLEG], nleg = 0, more = 0, nb = 0, next = 0, tick;
   size_t i, *cnt = NULL;
   ticks cb, tx, ty;
@@ -559,11 +560,9 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   memset(&ty, 0, sizeof ty);
   memset(&tx, 0, sizeof tx);
   left = m;
-  bottom = m + lh + 6 * s;                     /* the scale bar's row */
   if (!o->noaxes) {
     mkticks(&ty, o->lo[1], o->hi[1], ly > lx ? 8 : 5, s, 0);
     left = m + lh + 2 * s + ty.maxw + 3 * s + tick;
-    bottom += tick + 3 * s + lh + lh;          /* labels, title */
   }
   dw = o->width - left - m - panel;
   if (dw < 40) {
@@ -581,6 +580,16 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
     if (k < tx.n) mkticks(&tx, o->lo[0], o->hi[0], k < 2 ? 2 : k, s, 0);
   }
   L.sc = dw / lx;
+  /* the scale bar goes at the left of the x-axis title's row when it
+  ** fits beside the title, else in a row of its own */
+  L.bar = bar_length(lx);
+  axis_label(L.bar, L.bar, barlab, sizeof barlab);
+  if (u) snprintf(barlab + strlen(barlab), sizeof barlab - strlen(barlab), " %s", u);
+  barpx = (int)floor(L.bar * L.sc + 0.5);
+  if (barpx < 2 * s) barpx = 2 * s;
+  barw = barpx + 5 * s + canvas_textw(barlab, s);
+  barrow = o->noaxes || left + barw + 8 * s > left + dw / 2 - canvas_textw(xt, s) / 2;
+  bottom = s + m + (o->noaxes ? 0 : tick + 3 * s + 2 * lh) + (barrow ? 10 * s : 0);
   /* checked before it becomes an int (the image's limit below says
   ** the same); by the aspect, as dw / lx overflows for a tiny window */
   if (!(ly / lx * dw <= PNG_MAXDIM)) {
@@ -600,13 +609,16 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   L.dx1 = left + dw;
   L.dy1 = top + dh;
   L.h = top + dh + bottom;
-  L.bar = bar_length(lx);
   if (kind == RENDER_SCALAR) {
     L.bx0 = L.dx1 + 14 * s;
     L.bx1 = L.bx0 + 14 * s;
     L.by0 = top + lh + 4 * s;  /* room for the key and the top label */
-    L.by1 = L.dy1 > L.by0 + 60 * s ? L.dy1 : L.by0 + 60 * s;
-    if (L.by1 + lh + next * lh + m > L.h) L.h = L.by1 + lh + next * lh + m;
+    /* the bar spans the domain, less what the extent's lines under it
+    ** need beyond the rows below the domain, and is 40 s at least */
+    L.by1 = L.h - m - lh / 2 - next * lh;
+    if (L.by1 > L.dy1) L.by1 = L.dy1;
+    if (L.by1 < L.by0 + 40 * s) L.by1 = L.by0 + 40 * s;
+    if (L.by1 + lh / 2 + next * lh + m > L.h) L.h = L.by1 + lh / 2 + next * lh + m;
   } else if (top + lh * (nleg + 2 * (more > 0)) + m > L.h)
     L.h = top + lh * (nleg + 2 * (more > 0)) + m;
   if (L.h > PNG_MAXDIM) {
@@ -660,15 +672,14 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
     p_text(P, m, (L.dy0 + L.dy1) / 2, yt, s, INK, CV_CENTER, CV_TOP, 1);
     y = L.dy1 + s + tick + 3 * s + 2 * lh;
   }
-  /* the scale bar, under the domain's left end */
+  /* the scale bar, under the domain's left end: its centre line on the
+  ** axis title's, or in the middle of its own row */
   {
-    int bl = (int)floor(L.bar * L.sc + 0.5), by = y + 3 * s + CANVAS_CAP(s);
-    axis_label(L.bar, L.bar, buf, sizeof buf);
-    if (u) snprintf(buf + strlen(buf), sizeof buf - strlen(buf), " %s", u);
-    p_rect(P, L.dx0, by, L.dx0 + bl, by + 2 * s, INK);
-    p_rect(P, L.dx0, by - 2 * s, L.dx0 + s, by + 4 * s, INK);
-    p_rect(P, L.dx0 + bl - s, by - 2 * s, L.dx0 + bl, by + 4 * s, INK);
-    p_text(P, L.dx0 + bl + 5 * s, by + s, buf, s, INK, CV_LEFT, CV_MIDDLE, 0);
+    int cy = barrow ? y + 5 * s : y - lh + CANVAS_CAP(s) / 2;
+    p_rect(P, L.dx0, cy - s, L.dx0 + barpx, cy + s, INK);
+    p_rect(P, L.dx0, cy - 3 * s, L.dx0 + s, cy + 3 * s, INK);
+    p_rect(P, L.dx0 + barpx - s, cy - 3 * s, L.dx0 + barpx, cy + 3 * s, INK);
+    p_text(P, L.dx0 + barpx + 5 * s, cy, barlab, s, INK, CV_LEFT, CV_MIDDLE, 0);
   }
 
   if (kind == RENDER_SCALAR) {
@@ -688,7 +699,7 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
              CV_MIDDLE, 0);
     }
     for (k = 0; k < next; k++)
-      p_text(P, L.bx0, L.by1 + lh + k * lh, ext[k], s, INK, CV_LEFT,
+      p_text(P, L.bx0, L.by1 + lh / 2 + k * lh, ext[k], s, INK, CV_LEFT,
              CV_TOP, 0);
   } else {
     x = L.dx1 + 14 * s;

@@ -265,7 +265,7 @@ static int crange(const render_opts *o, const particles *ps, const double *v,
                a, b);
       return -1;
     }
-    if (!o->has_range && !(a > 0)) {
+    if (!o->has_range && !(a > 0 && L->vmin > 0)) {
       snprintf(err, errlen, "a log scale needs values above zero: '%s' "
                "ranges over [%g, %g]; give a range {lo, hi} with lo > 0",
                key, L->vmin, L->vmax);

@@ -81,6 +81,28 @@ V.holds("unwritable file names the path and the reason",
         e:find("/nonexistent%-dir%-mvmpm/x.png") and e:find("No such file"), 0, e)
 V.holds("nothing left under the name", io.open(tmp("x.png")) == nil, 0)
 
+V.case "sim:render options: svg, log, axes, matrix, automatic ranges"
+p = tmp("b.svg")
+sim:render {file = p, by = "speed", range = "full", axes = false}
+local f = io.open(p, "rb")
+local text = f and f:read("a") or ""
+if f then f:close() end
+local npath = select(2, text:gsub("<path ", ""))
+V.holds("an SVG document with one polygon per particle", text:find("^<%?xml") and
+        text:find("</svg>") and npath == #sim:particles("mass"), npath)
+e = err_of(sim.render, sim, {file = tmp("x.png"), by = "velocity.x", log = true})
+V.holds("log over values not all above zero is refused, naming the key",
+        e:find("log scale needs values above zero") and e:find("'velocity.x'"), 0, e)
+e = err_of(sim.render, sim, {file = tmp("x.png"), by = "mass", log = true, range = {0, 1}})
+V.holds("log with a range from zero is refused", e:find("range above zero"), 0, e)
+e = err_of(sim.render, sim, {file = tmp("x.png"), matrix = "nosuch"})
+V.holds("a matrix no body is called", e:find("no body named 'nosuch'"), 0, e)
+e = err_of(sim.render, sim, {file = tmp("x.png"), range = "wide"})
+V.holds("an automatic range other than robust or full", e:find("robust, full"), 0, e)
+p = tmp("log.png")
+sim:render {file = p, by = "mass", log = true, matrix = sim:bodies()[1].name}
+V.holds("log over mass, with a matrix named", png_size(p) == 800, 0)
+
 V.case "mvmpm.plot"
 p = tmp("plot.png")
 mvmpm.plot {file = p, title = "t", xlabel = "x", ylabel = "y", ylog = true,

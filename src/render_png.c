@@ -421,6 +421,37 @@ typedef struct ticks {
   int maxw;                  /* widest label, pixels */
 } ticks;
 
+/*
+** One style along an axis: when some labels are in exponent form and
+** others not ("5e-4" beside "0.0010"), all but zero take the exponent
+** form, with the digits the step needs.
+*/
+static void uniform(ticks *T) {
+  int k, ex = 0, fx = 0;
+  for (k = 0; k < T->n; k++) {
+    if (strchr(T->lab[k], 'e')) ex = 1;
+    else if (T->t[k] != 0) fx = 1;
+  }
+  if (!ex || !fx || !(T->step > 0)) return;
+  for (k = 0; k < T->n; k++) {
+    double v = T->t[k];
+    int e, d;
+    char *p;
+    if (v == 0 || !isfinite(v)) continue;
+    e = (int)floor(log10(fabs(v)));
+    d = e - (int)floor(log10(T->step) + 1e-9);
+    d = d < 0 ? 0 : d > 15 ? 15 : d;
+    snprintf(T->lab[k], sizeof T->lab[k], "%.*f", d, v / pow(10, e));
+    if (strchr(T->lab[k], '.')) {   /* no trailing zeros */
+      p = T->lab[k] + strlen(T->lab[k]) - 1;
+      while (*p == '0') *p-- = 0;
+      if (*p == '.') *p = 0;
+    }
+    snprintf(T->lab[k] + strlen(T->lab[k]), sizeof T->lab[k] - strlen(T->lab[k]),
+             "e%d", e);
+  }
+}
+
 static void mkticks(ticks *T, double lo, double hi, int want, int s, int log) {
   double minor[4 * AXIS_MAXTICKS];
   int k, nm;
@@ -431,11 +462,13 @@ static void mkticks(ticks *T, double lo, double hi, int want, int s, int log) {
     T->n = axis_ticks(lo, hi, want < 2 ? 2 : want, T->t, &T->step);
   T->maxw = 0;
   for (k = 0; k < T->n; k++) {
-    int w;
     if (log && T->t[k] > 0 && fabs(log10(T->t[k]) - floor(log10(T->t[k]) + 0.5)) < 1e-9)
       axis_label(T->t[k], T->t[k], T->lab[k], sizeof T->lab[k]);
     else axis_label(T->t[k], T->step, T->lab[k], sizeof T->lab[k]);
-    w = canvas_textw(T->lab[k], s);
+  }
+  if (!log) uniform(T);
+  for (k = 0; k < T->n; k++) {
+    int w = canvas_textw(T->lab[k], s);
     if (w > T->maxw) T->maxw = w;
   }
 }
@@ -482,6 +515,7 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   size_t i, *cnt = NULL;
   ticks cb, tx, ty;
   const char *u = o->unit && o->unit[0] ? o->unit : NULL;
+  double us = 1;  /* world length to the axes' unit */
   memset(&L, 0, sizeof L);
   L.matrix = -1;
   lx = o->hi[0] - o->lo[0];
@@ -555,13 +589,16 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   }
   /* the axes: y labels fix the left gutter, then the x ticks fit the
   ** width left */
+  /* metres for a small domain read better as mm or μm */
+  if (u && strcmp(u, "m") == 0 && lx < 1e-4) { us = 1e6; u = "μm"; }
+  else if (u && strcmp(u, "m") == 0 && lx < 0.1) { us = 1e3; u = "mm"; }
   snprintf(xt, sizeof xt, u ? "x (%s)" : "x", u);
   snprintf(yt, sizeof yt, u ? "y (%s)" : "y", u);
   memset(&ty, 0, sizeof ty);
   memset(&tx, 0, sizeof tx);
   left = m;
   if (!o->noaxes) {
-    mkticks(&ty, o->lo[1], o->hi[1], ly > lx ? 8 : 5, s, 0);
+    mkticks(&ty, o->lo[1] * us, o->hi[1] * us, ly > lx ? 8 : 5, s, 0);
     left = m + lh + 2 * s + ty.maxw + 3 * s + tick;
   }
   dw = o->width - left - m - panel;
@@ -575,17 +612,17 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
     return -1;
   }
   if (!o->noaxes) {
-    mkticks(&tx, o->lo[0], o->hi[0], 6, s, 0);
+    mkticks(&tx, o->lo[0] * us, o->hi[0] * us, 6, s, 0);
     k = dw / (tx.maxw + 12 * s);
-    if (k < tx.n) mkticks(&tx, o->lo[0], o->hi[0], k < 2 ? 2 : k, s, 0);
+    if (k < tx.n) mkticks(&tx, o->lo[0] * us, o->hi[0] * us, k < 2 ? 2 : k, s, 0);
   }
   L.sc = dw / lx;
   /* the scale bar goes at the left of the x-axis title's row when it
   ** fits beside the title, else in a row of its own */
-  L.bar = bar_length(lx);
+  L.bar = bar_length(lx * us);
   axis_label(L.bar, L.bar, barlab, sizeof barlab);
   if (u) snprintf(barlab + strlen(barlab), sizeof barlab - strlen(barlab), " %s", u);
-  barpx = (int)floor(L.bar * L.sc + 0.5);
+  barpx = (int)floor(L.bar / us * L.sc + 0.5);
   if (barpx < 2 * s) barpx = 2 * s;
   barw = barpx + 5 * s + canvas_textw(barlab, s);
   barrow = o->noaxes || left + barw + 8 * s > left + dw / 2 - canvas_textw(xt, s) / 2;
@@ -655,14 +692,14 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   y = L.dy1 + s;
   if (!o->noaxes) {
     for (k = 0; k < tx.n; k++) {
-      int px = L.dx0 + (int)floor(axis_frac(tx.t[k], o->lo[0], o->hi[0]) * dw + 0.5);
+      int px = L.dx0 + (int)floor(axis_frac(tx.t[k], o->lo[0] * us, o->hi[0] * us) * dw + 0.5);
       if (px >= L.dx1) px = L.dx1 - 1;
       p_rect(P, px - s / 2, L.dy1 + s, px - s / 2 + s, L.dy1 + s + tick, INK);
       p_text(P, px, L.dy1 + s + tick + 3 * s, tx.lab[k], s, INK, CV_CENTER,
              CV_TOP, 0);
     }
     for (k = 0; k < ty.n; k++) {
-      int py = L.dy1 - 1 - (int)floor(axis_frac(ty.t[k], o->lo[1], o->hi[1]) * (dh - 1) + 0.5);
+      int py = L.dy1 - 1 - (int)floor(axis_frac(ty.t[k], o->lo[1] * us, o->hi[1] * us) * (dh - 1) + 0.5);
       p_rect(P, L.dx0 - s - tick, py - s / 2, L.dx0 - s, py - s / 2 + s, INK);
       p_text(P, L.dx0 - s - tick - 3 * s, py, ty.lab[k], s, INK, CV_RIGHT,
              CV_MIDDLE, 0);

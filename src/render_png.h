@@ -34,8 +34,9 @@
 ** error says so.
 **
 ** Around the domain: ticks with labels in world units, axis titles
-** "x (UNIT)" and "y (UNIT)" (without a unit when unit is NULL), and a
-** scale bar of a 1-2-5 length under it; noaxes leaves out the ticks and
+** "x (UNIT)" and "y (UNIT)" (without a unit when unit is NULL; metres
+** become mm under 0.1 m of width and μm under 0.1 mm), and a scale bar
+** of a 1-2-5 length near a fifth of the width under it; noaxes leaves out the ticks and
 ** titles.  By body: a categorical colour per body, except that a matrix
 ** (the body named by matrix; else one whose name begins with "binder"
 ** or "matrix"; else, among three or more bodies, one holding over a
@@ -93,7 +94,7 @@ typedef struct render_layout {
   int roundoff;              /* the values are round-off of their field */
   int cmap;                  /* colormap used (scalars) */
   int matrix;                /* body drawn as the matrix, or -1 */
-  double bar;                /* the scale bar's length, world units */
+  double bar;                /* the scale bar's length in the axes' unit */
 } render_layout;
 
 /* what a key gives */

@@ -9,18 +9,36 @@
 #   make pbx-scale the PBX grain bed's cost against its grain count (a few minutes)
 #   make study     what accuracy costs in time: studies/*.lua, CSVs in out/study,
 #                  plots in docs/figures/accuracy_*.png (docs/accuracy.md)
-#   make check-paraview  ParaView's pvbatch opens a run's XDMF (needs Debian's paraview)
+#   make check-paraview  ParaView's three XDMF readers open a run's XDMF (installs
+#                  Debian's paraview first: make deps-paraview)
+#   make install   PREFIX/bin/mvmpm, the Lua modules, mvmpm.so for a stock lua5.4,
+#                  the manual mvmpm(1); PREFIX=/usr/local, DESTDIR for staging
+#   make CC=clang  the same build with clang; PORTABLE=1 without -march=native
 
 DEB_PACKAGES = build-essential pkg-config liblua5.4-dev libhdf5-dev hdf5-tools \
-               libedit-dev zlib1g-dev python3-h5py python3-numpy tmux
+               libedit-dev zlib1g-dev python3-h5py python3-numpy tmux lua5.4 \
+               groff-base
 
 PKGS   = lua5.4 hdf5 libedit zlib
 CC    ?= cc
-# the same warnings, as errors, in every build; -Wformat-truncation is
-# gcc's alone (clang refuses to hear of it)
+PREFIX ?= /usr/local
+# the same warnings, as errors, in every build, with gcc or clang
+# (make CC=clang); -Wformat-truncation is gcc's alone
 WARNCOM = -Wall -Wextra -Werror -Wshadow -Wno-unused-parameter
+ifneq (,$(findstring clang,$(shell $(CC) --version 2>/dev/null)))
+WARN   = $(WARNCOM)
+else
 WARN   = $(WARNCOM) -Wno-format-truncation
-OPT    = -O3 -march=native
+endif
+# PORTABLE=1: code for any x86-64 (or the compiler's default target), for
+# a binary that must run on every node of a cluster; otherwise tuned to
+# this machine's processor
+ifeq ($(PORTABLE),1)
+ARCH   =
+else
+ARCH   = -march=native
+endif
+OPT    = -O3 $(ARCH)
 # undefined behaviour stops the run at the first report: gcc's
 # "undefined" leaves out float-cast-overflow (a NaN or 1e308 cast to an
 # int), so it is named.  float-divide-by-zero stays out: make test never
@@ -58,10 +76,15 @@ UNITBIN = $(UNIT:tests/unit/%.c=$(BUILD)/unit/%)
 
 all: $(BIN)
 
+# the compiler and its flags, kept in the build directory: objects built
+# with others (make CC=clang, PORTABLE=1 after a tuned build) are rebuilt
+FLAGSTAMP = $(BUILD)/flags
+$(shell mkdir -p $(BUILD); echo '$(CC) $(CFLAGS)' | cmp -s - $(FLAGSTAMP) 2>/dev/null || echo '$(CC) $(CFLAGS)' > $(FLAGSTAMP))
+
 $(BIN): $(OBJ)
 	$(CC) $(CFLAGS) -o $@ $(OBJ) $(LDLIBS)
 
-$(BUILD)/%.o: src/%.c | $(BUILD)
+$(BUILD)/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)
 	$(CC) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/unit/%: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
@@ -105,6 +128,36 @@ pbx-shear: $(BIN)
 clean:
 	rm -rf build build-san build-tsan build-fuzz mvmpm
 
+# The Lua module for a stock interpreter: the engine's objects built again
+# position-independent, linked without liblua (the interpreter has it;
+# two copies of Lua in one process would corrupt its state)
+PICOBJ = $(LIBOBJ:$(BUILD)/%.o=$(BUILD)/pic/%.o)
+LUALIBS = $(shell pkg-config --libs hdf5 libedit zlib 2>/dev/null) -lm -pthread
+$(BUILD)/pic/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)/pic
+	$(CC) $(CFLAGS) -fPIC -c $< -o $@
+$(BUILD)/pic:
+	mkdir -p $@
+$(BUILD)/mvmpm.so: $(PICOBJ)
+	$(CC) $(CFLAGS) -shared -o $@ $(PICOBJ) $(LUALIBS)
+module: $(BUILD)/mvmpm.so
+
+# bin/, share/lua/5.4/mvmpm/ and lib/lua/5.4/ are where Debian's lua5.4
+# looks under /usr/local; the binary looks in ../share/lua/5.4 beside
+# itself, so any PREFIX works
+LUAMODS = $(wildcard lua/mvmpm/*.lua)
+install: $(BIN) $(BUILD)/mvmpm.so
+	install -d $(DESTDIR)$(PREFIX)/bin $(DESTDIR)$(PREFIX)/share/lua/5.4/mvmpm \
+	  $(DESTDIR)$(PREFIX)/lib/lua/5.4 $(DESTDIR)$(PREFIX)/share/man/man1
+	install -m 755 $(BIN) $(DESTDIR)$(PREFIX)/bin/mvmpm
+	install -m 644 $(LUAMODS) $(DESTDIR)$(PREFIX)/share/lua/5.4/mvmpm/
+	install -m 755 $(BUILD)/mvmpm.so $(DESTDIR)$(PREFIX)/lib/lua/5.4/mvmpm.so
+	install -m 644 docs/mvmpm.1 $(DESTDIR)$(PREFIX)/share/man/man1/mvmpm.1
+
+uninstall:
+	rm -f $(DESTDIR)$(PREFIX)/bin/mvmpm $(DESTDIR)$(PREFIX)/lib/lua/5.4/mvmpm.so \
+	  $(DESTDIR)$(PREFIX)/share/man/man1/mvmpm.1
+	rm -rf $(DESTDIR)$(PREFIX)/share/lua/5.4/mvmpm
+
 # the scene loader and Lua API under libFuzzer (clang), ASan and UBSan,
 # seeded with the scenes and tests/fuzz/seeds (the corpus in
 # build-fuzz/corpus is kept between runs); FUZZ_SECONDS (default 120)
@@ -141,16 +194,25 @@ study: $(BIN)
 	@mkdir -p out/study docs/figures
 	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
 
-.PHONY: all deps unit test bench clean check-paraview figures hard pbx-scale pbx-shear fuzz random study
--include $(OBJ:.o=.d) $(UNITBIN:=.d)
+.PHONY: all deps deps-paraview unit test bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
+-include $(OBJ:.o=.d) $(UNITBIN:=.d) $(PICOBJ:.o=.d)
 
-# ParaView (Debian's paraview, not a build dependency) opens a run's XDMF
-# series and must see every particle and every array of every snapshot
-check-paraview: $(BIN)
+# ParaView (Debian's paraview, installed by make deps-paraview; not a
+# build dependency) opens a run's XDMF series with each of its three
+# XDMF readers, and each must see every particle and every array of
+# every snapshot, bit for bit
+PV_READERS = XDMFReader Xdmf3ReaderS Xdmf3ReaderT
+deps-paraview:
+	@if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
+	command -v pvbatch >/dev/null || { $$SUDO apt-get update && \
+	  DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y paraview python3-h5py python3-numpy; }
+check-paraview: $(BIN) deps-paraview
 	@rm -rf build/check-paraview
 	./$(BIN) run scenarios/cylinder_bounce.lua --set friction=0.1 --out build/check-paraview --quiet
-	pvbatch tests/tools/check_xdmf.py build/check-paraview/particles.xmf \
-	  $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done)
+	@for r in $(PV_READERS); do \
+	  pvbatch tests/tools/check_xdmf.py build/check-paraview/particles.xmf \
+	    $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done) --reader $$r || exit 1; \
+	done
 
 # the granular shear cell (docs/shear.md) at the report's resolution, both
 # scenes and both bond strengths, in the background:
@@ -169,3 +231,7 @@ shear: $(BIN)
 	@echo "running in the background; progress in out/shear.log"
 
 .PHONY: shear
+
+# the compile flags without the dependency files (tests compile with them)
+print-cflags:
+	@echo $(filter-out -MMD -MP,$(CFLAGS))

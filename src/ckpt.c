@@ -123,6 +123,19 @@ static void vreal(ckv *v, const char *name, double *p) {
   else *p = v->re.r[k];
 }
 
+/* a value a checkpoint may lack (added to the state after its format was
+** set): def when absent, checked as vreal when present */
+static void vreal_opt(ckv *v, const char *name, double *p, double def) {
+  size_t k;
+  if (v->failed) return;
+  if (v->apply) {
+    for (k = 0; k < v->re.n; k++)
+      if (strcmp(v->re.name[k], name) == 0) break;
+    if (k == v->re.n) { *p = def; return; }
+  }
+  vreal(v, name, p);
+}
+
 static void vint(ckv *v, const char *name, int64_t *p) {
   long k;
   if (v->failed) return;
@@ -203,6 +216,10 @@ static void visit_sim(ckv *v, sim *s) {
   vreal(v, "e.viscous", &e->viscous);
   vreal(v, "e.thermal", &e->thermal);
   vreal(v, "e.initial", &e->initial);
+  /* newer than the format: a checkpoint without them settled nothing,
+  ** and its potential's start is taken as where it was then */
+  vreal_opt(v, "e.settled", &e->settled, 0);
+  vreal_opt(v, "e.potential0", &e->potential0, e->potential);
   vvec(v, "e.", "mom", e->mom, DIM);
   vreal(v, "e.angmom", &e->angmom);
   vreal(v, "e.jmin", &e->jmin);

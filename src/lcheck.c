@@ -7,18 +7,26 @@
 #include <string.h>
 #include "lcheck.h"
 
+/* edits between a and b: insertions, deletions, substitutions and swaps
+** of two neighbours (optimal string alignment), so "stpe" is one edit
+** from "step" and not two */
 static int distance(const char *a, const char *b) {
-  int la = (int)strlen(a), lb = (int)strlen(b), i, j, prev[64], cur[64];
+  int la = (int)strlen(a), lb = (int)strlen(b), i, j;
+  int pp[64], prev[64], cur[64];
   if (la > 60 || lb > 60) return 99;
-  for (j = 0; j <= lb; j++) prev[j] = j;
+  for (j = 0; j <= lb; j++) pp[j] = prev[j] = j;
   for (i = 1; i <= la; i++) {
     cur[0] = i;
     for (j = 1; j <= lb; j++) {
       int c = prev[j - 1] + (a[i - 1] != b[j - 1]);
       if (prev[j] + 1 < c) c = prev[j] + 1;
       if (cur[j - 1] + 1 < c) c = cur[j - 1] + 1;
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] &&
+          pp[j - 2] + 1 < c)
+        c = pp[j - 2] + 1;
       cur[j] = c;
     }
+    memcpy(pp, prev, sizeof(int) * (lb + 1));
     memcpy(prev, cur, sizeof(int) * (lb + 1));
   }
   return prev[lb];
@@ -29,9 +37,36 @@ const char *chk_suggest(const char *key, const char *const allowed[]) {
   int bd = 99, k, lim = (int)strlen(key) / 3 + 1;
   for (k = 0; allowed[k]; k++) {
     int d = distance(key, allowed[k]);
-    if (d < bd) { bd = d; best = allowed[k]; }
+    /* ties go to the first in byte order: a table's keys come in no set order */
+    if (d < bd || (d == bd && best && strcmp(allowed[k], best) < 0)) {
+      bd = d;
+      best = allowed[k];
+    }
   }
   return bd <= lim ? best : NULL;
+}
+
+int chk_nokey(lua_State *L, const char *what, const char *key, int tab,
+              const char *const extra[]) {
+  const char *names[128];
+  const char *s;
+  int n = 0, k;
+  tab = lua_absindex(L, tab);
+  lua_pushnil(L);
+  /* the strings stay alive: they are keys of the table, which is on the
+  ** stack until the error is raised */
+  while (lua_next(L, tab)) {
+    lua_pop(L, 1);
+    if (n < 120 && lua_type(L, -1) == LUA_TSTRING &&
+        lua_tostring(L, -1)[0] != '_')
+      names[n++] = lua_tostring(L, -1);
+  }
+  for (k = 0; extra && extra[k] && n < 127; k++) names[n++] = extra[k];
+  names[n] = NULL;
+  s = chk_suggest(key, names);
+  if (s) return luaL_error(L, "%s has no field or function '%s' (did you "
+                              "mean '%s'?)", what, key, s);
+  return luaL_error(L, "%s has no field or function '%s'", what, key);
 }
 
 static void listall(luaL_Buffer *b, const char *const allowed[]) {

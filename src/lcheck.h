@@ -53,5 +53,11 @@ int chk_error(lua_State *L, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
 /* the closest allowed word to key, or NULL if none is close */
 const char *chk_suggest(const char *key, const char *const allowed[]);
+/* an unknown name read from an object: raises "WHAT has no field or
+** function 'key' (did you mean 'x'?)", the names being the string keys
+** of the table at tab (its methods, or a module's functions) and the
+** NULL-terminated extra (its fields; may be NULL).  Never returns */
+int chk_nokey(lua_State *L, const char *what, const char *key, int tab,
+              const char *const extra[]);
 
 #endif

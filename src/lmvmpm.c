@@ -322,6 +322,29 @@ static int lclock(lua_State *L) {
   return 1;
 }
 
+/* mvmpm.NAME that the module lacks: a module of the library (mvmpm.pack)
+** is named with its require; anything else gets the nearest name.  Only
+** string keys: mvmpm[1] is plain nil */
+static int modindex(lua_State *L) {
+  const char *k;
+  if (lua_type(L, 2) != LUA_TSTRING) return 0;
+  k = lua_tostring(L, 2);
+  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.luadir");
+  if (lua_isstring(L, -1) && strlen(k) < 64 && !strchr(k, '/') &&
+      !strchr(k, '.')) {
+    char path[PATH_MAX + 80];
+    FILE *f;
+    snprintf(path, sizeof path, "%s/mvmpm/%s.lua", lua_tostring(L, -1), k);
+    if ((f = fopen(path, "r"))) {
+      fclose(f);
+      return luaL_error(L, "mvmpm.%s is a module of its own: local %s = "
+                           "require \"mvmpm.%s\"", k, k, k);
+    }
+  }
+  lua_pop(L, 1);
+  return chk_nokey(L, "mvmpm", k, 1, NULL);
+}
+
 int luaopen_mvmpm(lua_State *L) {
   static const luaL_Reg fns[] = {{"sim", lsim_new}, {"params", params},
                                  {"load", load}, {"clock", lclock},
@@ -329,6 +352,10 @@ int luaopen_mvmpm(lua_State *L) {
   int mod;
   luaL_newlib(L, fns);
   mod = lua_gettop(L);
+  lua_createtable(L, 0, 1);
+  lua_pushcfunction(L, modindex);
+  lua_setfield(L, -2, "__index");
+  lua_setmetatable(L, mod);
   lua_pushstring(L, MVMPM_VERSION);
   lua_setfield(L, mod, "version");
   lua_pushinteger(L, DIM);
@@ -341,46 +368,39 @@ int luaopen_mvmpm(lua_State *L) {
   return 1;
 }
 
-/* lua/ beside the executable, or one level up (build trees) */
+/* The directory holding the Lua modules (mvmpm/NAME.lua): $MVMPM_LUA, else the first of
+** lua/ beside the executable (a copy of the tree), ../lua (a build
+** directory in the tree) and ../share/lua/5.4 (make install's layout, so
+** an installed binary finds its modules wherever PREFIX put them).  It
+** goes first on package.path, and to the registry for the sandbox's
+** require. */
 void lmvmpm_setpath(lua_State *L, const char *argv0) {
-  char exe[PATH_MAX], dir[PATH_MAX], probe[PATH_MAX + 32];
-  const char *env = getenv("MVMPM_LUA");
+  static const char *const rel[] = {"/lua", "/../lua", "/../share/lua/5.4"};
+  char exe[PATH_MAX], dir[PATH_MAX + 32], probe[PATH_MAX + 64];
+  const char *env = getenv("MVMPM_LUA"), *found = NULL;
   ssize_t n = readlink("/proc/self/exe", exe, sizeof exe - 1);
   char *slash;
-  int up;
+  size_t k;
   if (n <= 0) {
     snprintf(exe, sizeof exe, "%s", argv0);
     n = (ssize_t)strlen(exe);
   }
   exe[n] = 0;
-  lua_getglobal(L, "package");
-  for (up = 0; up < 2; up++) {
-    snprintf(dir, sizeof dir, "%s", exe);
-    slash = strrchr(dir, '/');
-    if (!slash) snprintf(dir, sizeof dir, ".");
-    else *slash = 0;
-    if (up) {
-      slash = strrchr(dir, '/');
-      if (slash) *slash = 0;
-    }
-    snprintf(probe, sizeof probe, "%s/lua/mvmpm", dir);
-    if (env || access(probe, F_OK) == 0) {
-      lua_getfield(L, -1, "path");
-      lua_pushfstring(L, "%s/?.lua;%s/?/init.lua;%s", env ? env : probe,
-                      env ? env : probe, lua_tostring(L, -1));
-      /* probe ends in /lua/mvmpm: trim to /lua */
-      if (!env) snprintf(probe, sizeof probe, "%s/lua", dir);
-      lua_pushstring(L, env ? env : probe); /* for the sandbox's require */
-      lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.luadir");
-      if (!env) {
-        lua_pop(L, 1);
-        lua_pushfstring(L, "%s/?.lua;%s/?/init.lua;%s", probe, probe,
-                        lua_tostring(L, -1));
-      }
-      lua_setfield(L, -3, "path");
-      lua_pop(L, 1);
-      break;
-    }
+  if ((slash = strrchr(exe, '/'))) *slash = 0;
+  else snprintf(exe, sizeof exe, ".");
+  if (env) found = env;
+  for (k = 0; !found && k < sizeof rel / sizeof rel[0]; k++) {
+    snprintf(dir, sizeof dir, "%s%s", exe, rel[k]);
+    snprintf(probe, sizeof probe, "%s/mvmpm/verify.lua", dir);
+    if (access(probe, F_OK) == 0) found = dir;
   }
-  lua_pop(L, 1);
+  if (!found) return;
+  lua_getglobal(L, "package");
+  lua_getfield(L, -1, "path");
+  lua_pushfstring(L, "%s/?.lua;%s/?/init.lua;%s", found, found,
+                  lua_tostring(L, -1));
+  lua_setfield(L, -3, "path");
+  lua_pop(L, 2);
+  lua_pushstring(L, found);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.luadir");
 }

@@ -46,6 +46,8 @@ typedef struct lsim {
   char scene[512];        /* scene file, for messages and snapshots */
   char units[32];
   int drives, sidefns, nevery;
+  int nat_end;            /* sim:at_end functions */
+  double ended;           /* the end time they last ran at (NaN: never) */
   int tempfn;             /* uv.temperature is a function of time */
   /* checkpoints (ckpt.c) */
   double ck_every, ck_next; /* simulated time between them; 0: none */

@@ -583,8 +583,10 @@ static int bindex(lua_State *L) {
   else if (strcmp(k, "field") == 0) lua_pushinteger(L, b->field + 1);
   else if (strcmp(k, "driven") == 0) lua_pushboolean(L, b->driven);
   else {
+    static const char *const fields[] = {"name", "id", "field", "driven",
+                                         NULL};
     luaL_getmetafield(L, 1, "methods");
-    lua_getfield(L, -1, k);
+    if (lua_getfield(L, -1, k) == LUA_TNIL) chk_nokey(L, "body", k, -2, fields);
   }
   return 1;
 }

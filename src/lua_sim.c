@@ -184,7 +184,7 @@ static double friction(lua_State *L, int idx, const char *what, double def) {
 
 static void newuv(lua_State *L) {
   static const char *const t[] = {"mats", "bodies", "every", "drives",
-                                  "sidefn", "fieldnames", NULL};
+                                  "sidefn", "fieldnames", "at_end", NULL};
   int k;
   lua_createtable(L, 0, 8);
   for (k = 0; t[k]; k++) {
@@ -270,6 +270,7 @@ int lsim_new(lua_State *L) {
   sidx = lua_gettop(L);
   ls = lua_newuserdatauv(L, sizeof *ls, 1);
   memset(ls, 0, sizeof *ls);
+  ls->ended = NAN; /* sim:at_end has run at no end yet */
   luaL_setmetatable(L, LSIM_MT);
   newuv(L);
   {
@@ -475,6 +476,19 @@ static int levery(lua_State *L) {
   return 0;
 }
 
+/* sim:at_end(fn): fn(sim) runs once when a run reaches the scene's end
+** time (run.c), after the last step and its output: a summary, a
+** figure, a table, with the final state */
+static int lat_end(lua_State *L) {
+  lsim *ls = lsim_check(L, 1);
+  luaL_checktype(L, 2, LUA_TFUNCTION);
+  lsim_uv(L, 1, "at_end");
+  lua_pushvalue(L, 2);
+  lua_rawseti(L, -2, luaL_len(L, -2) + 1);
+  ls->nat_end++;
+  return 0;
+}
+
 /* sim:output{dir = "out/x", every = 0.5, csv_every = 1, checkpoint = 2} */
 static int loutput(lua_State *L) {
   static const char *const keys[] = {"dir", "every", "csv_every",
@@ -536,6 +550,97 @@ static void setnum(lua_State *L, const char *k, double v) {
   lua_setfield(L, -2, k);
 }
 
+/*
+** sim:settle{tol = 1e-3, t_max = ...}: let a packing come to rest under
+** its loads by kinetic damping (dynamic relaxation): step, and each time
+** the kinetic energy passes a maximum stop every particle (sim_stop), so
+** the energy the loads release goes into strain and out of the motion,
+** with no damping parameter to tune and no damping force in the step.
+** A maximum below tol times the largest kinetic energy seen is the
+** transfer's noise, not motion, and stops nothing (stopping there would
+** hold a body that is still falling).  Settled when over a window no
+** body's centre of mass moved more than a twentieth of a cell: the window is the time
+** a free particle takes to fall one cell under the gravity, or 100 steps
+** without gravity, so a body still in free fall cannot pass.  Refused
+** past t_max.  Returns true (false at t_max), the time taken and the
+** kinetic energy left.  The energy taken out is booked
+** (sim:energy().settled) and the budget still closes.
+*/
+/* each body's centre of mass into c (nbody x DIM): particles are sorted
+** by cell within steps, so a particle's index does not follow it */
+static void centres(const sim *s, double *c, double *m) {
+  const particles *ps = &s->ps;
+  size_t i;
+  int b, d;
+  for (b = 0; b < s->nbody; b++) {
+    m[b] = 0;
+    for (d = 0; d < DIM; d++) c[DIM * b + d] = 0;
+  }
+  for (i = 0; i < ps->n; i++) {
+    b = ps->body[i];
+    m[b] += ps->m[i];
+    for (d = 0; d < DIM; d++) c[DIM * b + d] += ps->m[i] * ps->x[d][i];
+  }
+  for (b = 0; b < s->nbody; b++)
+    for (d = 0; d < DIM; d++) c[DIM * b + d] /= m[b] > 0 ? m[b] : 1;
+}
+
+static int lsettle(lua_State *L) {
+  static const char *const keys[] = {"tol", "t_max", NULL};
+  lsim *ls = lsim_check(L, 1);
+  sim *s = &ls->s;
+  double tol, tmax, t0 = s->t, kprev, kmax = 0, g2 = 0, tw, twin;
+  double *c0, *c1, *m;
+  int rising = 0, done = 0, d, b, nb = s->nbody;
+  if (lua_isnoneornil(L, 2)) lua_newtable(L);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  chk_keys(L, 2, "settle", keys);
+  tol = chk_num(L, 2, "settle", "tol", 1e-3, 0, 1, CHK_OPENLO);
+  tmax = chk_num(L, 2, "settle", "t_max", s->t_end > s->t ? s->t_end - s->t : 1,
+                 0, LSIM_MAX_SPAN, CHK_OPENLO);
+  lsim_hold(L, ls);
+  if (!s->started) sim_begin(s);
+  for (d = 0; d < DIM; d++) g2 += s->gravity[d] * s->gravity[d];
+  tw = g2 > 0 ? sqrt(2 * s->g.h / sqrt(g2)) : 100 * s->dt;
+  c0 = lua_newuserdatauv(L, (size_t)(nb + 1) * (2 * DIM + 1) * sizeof *c0, 0);
+  c1 = c0 + (size_t)(nb + 1) * DIM;
+  m = c1 + (size_t)(nb + 1) * DIM;
+  centres(s, c0, m);
+  twin = s->t + tw;
+  kprev = s->e.kinetic;
+  while (s->t < t0 + tmax) {
+    double k;
+    run_until(L, 1, HUGE_VAL, 1);
+    k = s->e.kinetic;
+    if (k > kmax) kmax = k;
+    if (k > kprev) rising = 1;
+    else if (rising && k < kprev) { /* kprev was a maximum */
+      rising = 0;
+      if (kprev > tol * kmax) {
+        sim_stop(s);
+        k = s->e.kinetic;
+      }
+    }
+    kprev = k;
+    if (s->t >= twin) {
+      double far = 0;
+      centres(s, c1, m);
+      for (b = 0; b < nb; b++)
+        for (d = 0; d < DIM; d++) {
+          double u = fabs(c1[DIM * b + d] - c0[DIM * b + d]);
+          if (m[b] > 0 && u > far) far = u;
+        }
+      if (far <= 0.05 * s->g.h) { done = 1; break; }
+      memcpy(c0, c1, (size_t)nb * DIM * sizeof *c0);
+      twin = s->t + tw;
+    }
+  }
+  lua_pushboolean(L, done);
+  lua_pushnumber(L, s->t - t0);
+  lua_pushnumber(L, s->e.kinetic);
+  return 3;
+}
+
 /* sim:energy() -> the budget and momenta */
 static int lenergy(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
@@ -550,7 +655,9 @@ static int lenergy(lua_State *L) {
   setnum(L, "viscous", s->e.viscous);
   setnum(L, "boundary_work", s->e.boundary);
   setnum(L, "thermal_work", s->e.thermal);
+  setnum(L, "settled", s->e.settled);
   setnum(L, "initial", s->e.initial);
+  setnum(L, "scale", sim_scale(s));
   setnum(L, "total", sim_total(s));
   setnum(L, "residual", sim_residual(s));
   lua_pushinteger(L, (lua_Integer)s->ncut_total);
@@ -723,8 +830,12 @@ static int lindex(lua_State *L) {
     lua_pushstring(L, s->transfer == TRANSFER_APIC ? "apic"
                       : s->transfer == TRANSFER_XPIC ? "xpic" : "flip");
   else {
+    static const char *const fields[] = {
+        "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "cell",
+        "flip", "cfl", "friction", "removed", "threads", "shared_nodes",
+        "memory", "outdir", "update", "shape", "transfer", NULL};
     luaL_getmetafield(L, 1, "methods");
-    lua_getfield(L, -1, k);
+    if (lua_getfield(L, -1, k) == LUA_TNIL) chk_nokey(L, "sim", k, -2, fields);
   }
   return 1;
 }
@@ -776,6 +887,7 @@ void lsim_open(lua_State *L) {
       {"particles", lparticles}, {"stable_dt", lstable_dt},
       {"temperature", lsim_temperature}, {"render", lrender_sim},
       {"wall_force", lwall_force}, {"overlap", loverlap}, {"state", lstate},
+      {"settle", lsettle}, {"at_end", lat_end},
       {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);
   lua_pushcfunction(L, lindex);

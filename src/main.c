@@ -24,34 +24,20 @@
 
 static const char *progname = "mvmpm";
 
-static void usage(FILE *f) {
-  fprintf(f,
-"usage: %s run SCENE.lua [--set name=value ...] [--out DIR] [--quiet]\n"
+/* each command: its synopsis and what it does; usage() prints them all,
+** "mvmpm CMD --help" its own */
+typedef struct cmdhelp { const char *name, *syn, *text; } cmdhelp;
+static const cmdhelp helps[] = {
+  {"run",
+"run SCENE.lua [--set name=value ...] [--out DIR] [--quiet]\n"
 "                [--checkpoint-every T] [--sandbox] [--threads N] [--profile]\n"
 "       %s run --restart CHECKPOINT|DIR [SCENE.lua] [--set ...] [--quiet]\n"
-"                [--checkpoint-every T] [--sandbox]\n"
-"       %s repl [SCENE.lua] [--set name=value ...] [--out DIR]\n"
-"       %s test [FILE.lua ...]        (default: tests/verify/*.lua)\n"
-"       %s render SNAPSHOT.h5|CHECKPOINT.h5 [--by KEY] [--out FILE.png|.svg]\n"
-"                [--width N] [--range LO,HI|robust|full] [--log] [--no-axes]\n"
-"                [--colormap auto|seq|div] [--title TEXT] [--matrix BODY]\n"
-"                [--domain X0,X1,Y0,Y1]\n"
-"       %s --help | --version\n"
-"\n"
+"                [--checkpoint-every T] [--sandbox]\n",
 "run    runs the scene to its end time, writing HDF5 snapshots, an XDMF\n"
 "       index (particles.xmf) and diagnostics.csv to DIR (default: the\n"
 "       scene's output dir, else out/<scene name>)\n"
-"repl   loads the scene without running it and gives a Lua prompt with the\n"
-"       simulation as 'sim': sim:step(n), sim:run(t), sim:energy(),\n"
-"       sim:bodies(), sim:snapshot(path); help() lists more\n"
-"test   runs verification scripts; each check prints measured vs reference\n"
-"       and tolerance; ends with 'N passed, M failed'\n"
-"render draws a snapshot's or a checkpoint's particles as a PNG or SVG,\n"
-"       coloured by KEY: body, pressure, sdiff (principal stress\n"
-"       difference), speed, or a field such as velocity.x, stress.xy, mass\n"
-"       (default: body), in the scene's domain; FILE defaults to the\n"
-"       snapshot's name with _KEY.png\n"
 "--set  overrides a parameter the scene declares with mvmpm.params{...}\n"
+"--quiet  no progress line and no summary\n"
 "--checkpoint-every T  writes DIR/checkpoint_NNNNNN.h5 every T of simulated\n"
 "       time (the newest two are kept); --restart continues one bit for bit\n"
 "       (DIR: its newest), in its directory, with the same --set values\n"
@@ -62,8 +48,74 @@ static void usage(FILE *f) {
 "       dofile/loadfile or bytecode, and writes only inside DIR, following\n"
 "       no link there; its checkpoints restart sandboxed\n"
 "exit status: 0 done, 1 error, 2 usage, 130 stopped by Ctrl-C (a checkpoint\n"
-"       was written; the message says how to continue)\n",
-          progname, progname, progname, progname, progname, progname);
+"       was written; the message says how to continue)\n"},
+  {"repl",
+"repl [SCENE.lua] [--set name=value ...] [--out DIR]\n",
+"repl   loads the scene without running it and gives a Lua prompt with the\n"
+"       simulation as 'sim': sim:step(n), sim:run(t), sim:energy(),\n"
+"       sim:bodies(), sim:snapshot(path); help() lists more.  Without a\n"
+"       scene, a prompt with the mvmpm module loaded\n"
+"--set  overrides a parameter the scene declares with mvmpm.params{...}\n"
+"--out  the directory the scene's outputs go to\n"},
+  {"test",
+"test [FILE.lua ...]        (default: tests/verify/*.lua)\n",
+"test   runs verification scripts; each check prints measured vs reference\n"
+"       and tolerance; ends with 'N passed, M failed' (status 1 if any\n"
+"       failed)\n"},
+  {"render",
+"render SNAPSHOT.h5|CHECKPOINT.h5 [--by KEY] [--out FILE.png|.svg]\n"
+"                [--width N] [--range LO,HI|robust|full] [--log] [--no-axes]\n"
+"                [--colormap auto|seq|div] [--title TEXT] [--matrix BODY]\n"
+"                [--domain X0,X1,Y0,Y1]\n",
+"render draws a snapshot's or a checkpoint's particles as a PNG or SVG,\n"
+"       coloured by KEY: body, pressure, sdiff (principal stress\n"
+"       difference), speed, or a field such as velocity.x, stress.xy, mass\n"
+"       (default: body); FILE defaults to the snapshot's name with _KEY.png\n"
+"--range  the colour scale's ends (default robust: the 1st to 99th\n"
+"       percentile; full: min to max)\n"
+"--log  colour by log10 of the value (every value must be above zero)\n"
+"--colormap  seq (one hue), div (two, centred on 0) or auto\n"
+"--domain  the part of the plane drawn (default: the scene's domain the\n"
+"       file records, else the particles')\n"
+"--no-axes  no ticks, tick labels or axis titles\n"
+"--matrix  the body drawn grey among grains (default: one named binder or\n"
+"       matrix, else a body holding most of the particles)\n"},
+};
+#define NCMD (int)(sizeof helps / sizeof helps[0])
+
+static void usage(FILE *f) {
+  int k;
+  for (k = 0; k < NCMD; k++) {
+    fprintf(f, "%s %s ", k ? "      " : "usage:", progname);
+    fprintf(f, helps[k].syn, progname);
+  }
+  fprintf(f, "       %s CMD --help | --help | --version\n\n", progname);
+  for (k = 0; k < NCMD; k++) fputs(helps[k].text, f);
+  fprintf(f, "\nmanual: man mvmpm (docs/mvmpm.1)\n");
+}
+
+/* "mvmpm CMD ... --help": CMD's synopsis and options on stdout, 0; -1 if
+** the line asks for no help.  An argument that follows an option taking
+** a value (--set --help) is that value, not a request */
+static int cmdhelp_of(int argc, char **argv) {
+  int i, k;
+  for (i = 2; i < argc; i++) {
+    const char *a = argv[i];
+    if (strcmp(a, "--help") != 0 && strcmp(a, "-h") != 0) continue;
+    if (i > 2 && argv[i - 1][0] == '-' && argv[i - 1][1] == '-' &&
+        strcmp(argv[i - 1], "--quiet") != 0 &&
+        strcmp(argv[i - 1], "--sandbox") != 0 &&
+        strcmp(argv[i - 1], "--profile") != 0)
+      continue;
+    for (k = 0; k < NCMD; k++)
+      if (strcmp(argv[1], helps[k].name) == 0) {
+        printf("usage: %s ", progname);
+        printf(helps[k].syn, progname);
+        printf("\n%s", helps[k].text);
+        return 0;
+      }
+  }
+  return -1;
 }
 
 static lua_State *newstate(const char *argv0) {
@@ -491,14 +543,19 @@ static int cmd_run(int argc, char **argv) {
     sim *s = &ls->s;
     printf("%s: %ld steps to t = %g, %zu particles, %d bodies, %.2f s wall\n",
            o.scene, s->step, s->t, s->ps.n, s->nbody, now() - w0);
+    /* the residual against the budget's scale: a share of the initial
+    ** energy would hold the potential's value, which the origin sets */
     printf("energy: initial %.6g  kinetic %.6g  strain %.6g  dissipated %.6g  "
-           "boundary work %.6g  residual %.3g (%.3g%% of initial)\n",
+           "boundary work %.6g  residual %.3g (%.3g%% of the scale %.6g)\n",
            s->e.initial, s->e.kinetic, s->e.strain, s->e.friction, s->e.boundary,
            sim_residual(s),
-           100 * sim_residual(s) / (s->e.initial > 0 ? s->e.initial : 1));
-    if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0)
-      printf("        plastic %.6g  viscous %.6g  thermal work %.6g\n",
-             s->e.plastic, s->e.viscous, s->e.thermal);
+           100 * sim_residual(s) / (sim_scale(s) > 0 ? sim_scale(s) : 1),
+           sim_scale(s));
+    if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0 ||
+        s->e.settled != 0)
+      printf("        plastic %.6g  viscous %.6g  thermal work %.6g  settled "
+             "%.6g\n", s->e.plastic, s->e.viscous, s->e.thermal,
+             s->e.settled);
     if (s->nremoved) printf("%zu particles left the domain and were removed\n", s->nremoved);
     printf("output: %s/ (particles.xmf, %d snapshots, diagnostics.csv)\n",
            ls->outdir, ls->nsnap);
@@ -618,6 +675,7 @@ int main(int argc, char **argv) {
            LUA_VERSION_MINOR);
     return 0;
   }
+  if (cmdhelp_of(argc, argv) == 0) return 0;
   if (strcmp(argv[1], "run") == 0) return cmd_run(argc, argv);
   if (strcmp(argv[1], "repl") == 0) return cmd_repl(argc, argv);
   if (strcmp(argv[1], "test") == 0) return cmd_test(argc, argv);

@@ -4,9 +4,12 @@
 ** the HDF5 snapshots.  A field of one component is a Scalar attribute; a
 ** field whose components are x, y (, z) is a Vector (ParaView's XDMF 2
 ** reader pads a 2-D vector with z = 0, which glyphs need); any other
-** field of several components is split into one Scalar per component
-** ("stress_xx") by a HyperSlab of its (n, ncomp) dataset, since tensors
-** here follow neither XDMF's Tensor nor its Tensor6 layout.
+** field of several components is a Matrix of its (n, ncomp) dataset,
+** one array of ncomp components in the snapshot's order (its
+** "components" attribute: stress xx,yy,xy,zz; F xx,xy,yx,yy).  Tensors
+** here follow neither XDMF's Tensor nor its Tensor6 layout, and a
+** HyperSlab per component (the other way to name them) is dropped by
+** ParaView's Xdmf3 readers; a Matrix is read by all three.
 */
 #include <errno.h>
 #include <stdio.h>
@@ -54,7 +57,7 @@ static void heavy(FILE *fp, const xdmf_entry *e, const pfield *f,
   fputs("</DataItem>\n", fp);
 }
 
-/* the whole dataset as one attribute: "Scalar" or "Vector" */
+/* the whole dataset as one attribute: "Scalar", "Vector" or "Matrix" */
 static void whole(FILE *fp, const xdmf_entry *e, const pfield *f,
                   const char *type) {
   fputs("    <Attribute Name=\"", fp);
@@ -72,24 +75,6 @@ static int isvector(const pfield *f) {
   for (c = 0; c < DIM; c++)
     if (!f->comp_names[c] || strcmp(f->comp_names[c], xyz[c]) != 0) return 0;
   return 1;
-}
-
-/* column c of an (n, ncomp) dataset: start (0, c), stride 1, count (n, 1) */
-static void column(FILE *fp, const xdmf_entry *e, const pfield *f, int c) {
-  fputs("    <Attribute Name=\"", fp);
-  xml(fp, f->name);
-  fputc('_', fp);
-  if (f->comp_names[c]) xml(fp, f->comp_names[c]);
-  else fprintf(fp, "%d", c);
-  fputs("\" AttributeType=\"Scalar\" Center=\"Node\">\n", fp);
-  fprintf(fp, "     <DataItem ItemType=\"HyperSlab\" NumberType=\"%s\""
-          " Precision=\"%d\" Dimensions=\"%zu 1\">\n"
-          "      <DataItem Format=\"XML\" Dimensions=\"3 2\">"
-          "0 %d 1 1 %zu 1</DataItem>\n",
-          f->type == PF_INT32 ? "Int" : "Float", f->type == PF_INT32 ? 4 : 8,
-          e->n, c, e->n);
-  heavy(fp, e, f, "      ");
-  fputs("     </DataItem>\n    </Attribute>\n", fp);
 }
 
 /* the shortest decimal that reads back as x: 0.05, not 0.05000000000000000277 */
@@ -121,7 +106,7 @@ static void nogrid(FILE *fp) {
 
 static void grid(FILE *fp, const xdmf_entry *e, const particles *ps,
                  const pfield *pos) {
-  int f, c;
+  int f;
   fputs("   <Grid Name=\"particles\" GridType=\"Uniform\">\n"
         "    <Time Value=\"", fp);
   number(fp, e->time);
@@ -131,9 +116,16 @@ static void grid(FILE *fp, const xdmf_entry *e, const particles *ps,
     fputs("   </Grid>\n", fp);
     return;
   }
+  /* the connectivity is given (the snapshot's /xdmf/vertex): ParaView's
+  ** Xdmf3 readers make no cells from the counts alone */
   fprintf(fp, "    <Topology TopologyType=\"Polyvertex\" NumberOfElements="
-          "\"%zu\" NodesPerElement=\"1\"/>\n"
-          "    <Geometry GeometryType=\"" GEOMETRY "\">\n", e->n);
+          "\"%zu\" NodesPerElement=\"1\">\n"
+          "     <DataItem Format=\"HDF\" NumberType=\"Int\" Precision=\"4\""
+          " Dimensions=\"%zu\">", e->n, e->n);
+  xml(fp, e->file);
+  fputs(":/xdmf/vertex</DataItem>\n"
+        "    </Topology>\n"
+        "    <Geometry GeometryType=\"" GEOMETRY "\">\n", fp);
   heavy(fp, e, pos, "     ");
   fputs("    </Geometry>\n", fp);
   for (f = 0; f < ps->nfields; f++) {
@@ -141,8 +133,7 @@ static void grid(FILE *fp, const xdmf_entry *e, const particles *ps,
     if (!(pf->flags & PF_OUTPUT) || pf == pos) continue;
     if (pf->ncomp == 1) whole(fp, e, pf, "Scalar");
     else if (isvector(pf)) whole(fp, e, pf, "Vector");
-    else
-      for (c = 0; c < pf->ncomp; c++) column(fp, e, pf, c);
+    else whole(fp, e, pf, "Matrix");
   }
   fputs("   </Grid>\n", fp);
 }

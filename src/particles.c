@@ -1,6 +1,7 @@
 /*
 ** particles.c - the structure-of-arrays particle store.
 */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "par.h"
@@ -123,6 +124,30 @@ int particles_add_field(particles *ps, const char *name, int ncomp,
     return (ps->fields[f].ncomp == ncomp && ps->fields[f].type == type) ? f
                                                                         : -1;
   return add(ps, name, ncomp, type, unit, flags, NULL, NULL);
+}
+
+int particles_name_comps(pfield *f, const char *joined) {
+  static const char *const *const sets[] = {xyz, tens, sten};
+  static const int sizes[] = {DIM, NTENS, NSTRESS};
+  size_t k;
+  int c;
+  for (k = 0; k < sizeof sets / sizeof sets[0]; k++) {
+    char buf[128];
+    size_t len = 0;
+    if (sizes[k] != f->ncomp) continue;
+    for (c = 0; c < f->ncomp; c++)
+      len += (size_t)snprintf(buf + len, sizeof buf - len, "%s%s",
+                              c ? "," : "", sets[k][c]);
+    if (strcmp(buf, joined) == 0) {
+      for (c = 0; c < f->ncomp; c++) f->comp_names[c] = sets[k][c];
+      return 1;
+    }
+  }
+  return 0;
+}
+
+const char *particles_tens_name(int c) {
+  return c >= 0 && c < NTENS ? tens[c] : NULL;
 }
 
 int particles_find(const particles *ps, const char *name) {

@@ -69,6 +69,12 @@ void particles_fit(particles *ps);
 int particles_add_field(particles *ps, const char *name, int ncomp,
                         int type, const char *unit, unsigned flags);
 /* find a field by name; -1 if absent */
+/* a field read back from a file: its component names from the file's
+** comma-joined list, when it is one of the engine's sets (x,y / xx,xy,..
+** / the stress's); 1 if named, 0 if not */
+int particles_name_comps(pfield *f, const char *joined);
+/* the name of component c of a full tensor (F, gradv): "xx", "xy", ... */
+const char *particles_tens_name(int c);
 int particles_find(const particles *ps, const char *name);
 /* pointer to component c of field f */
 static inline void *particles_comp(const particles *ps, int f, int c) {

@@ -45,10 +45,15 @@ int run_mkdirs(const char *path, char *err, size_t errlen) {
   return 0;
 }
 
+/* every term of the budget (docs/algorithm.md) is a column: total =
+** kinetic + strain + potential + lag, residual = initial + boundary_work
+** + thermal_work - dissipated - plastic - viscous - settled - total, and
+** scale (sim_scale) the size it is measured against */
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
     "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
-    "debonded", "bonded_area"};
+    "debonded", "bonded_area", "potential", "lag", "settled", "initial",
+    "scale"};
 #define NCOLS (int)(sizeof cols / sizeof cols[0])
 
 static void csv_row(lua_State *L, lsim *ls) {
@@ -63,6 +68,8 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[12] = s->e.mom[0]; v[13] = s->e.mom[1]; v[14] = s->e.angmom;
   v[15] = s->e.jmin; v[16] = s->e.jmax; v[17] = (double)s->ps.n;
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
+  v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;
+  v[23] = s->e.initial; v[24] = sim_scale(s);
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 
@@ -421,5 +428,20 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     }
   }
   if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 1);
+  /* the scene's end reached: its sim:at_end functions, once per end
+  ** time (a later sim:run to the same end takes no step and runs none) */
+  if (ls->nat_end && s->t >= s->t_end - 1e-12 * (1 + fabs(s->t_end)) &&
+      !(ls->ended == s->t_end)) {
+    lua_Integer j, n;
+    ls->ended = s->t_end;
+    lsim_uv(L, simidx, "at_end");
+    n = luaL_len(L, -1);
+    for (j = 1; j <= n; j++) {
+      lua_rawgeti(L, -1, j);
+      lua_pushvalue(L, simidx);
+      lua_call(L, 1, 0);
+    }
+    lua_pop(L, 1);
+  }
   return 0;
 }

@@ -238,10 +238,17 @@ double sim_law(const sim *s, int32_t a, int32_t b) {
 
 int sim_enable_apic(sim *s) {
   s->transfer = TRANSFER_APIC;
-  if (s->faff < 0)
+  if (s->faff < 0) {
+    int c;
+    /* in snapshots too: the affine field is half the particle's velocity
+    ** state under APIC */
     s->faff = particles_add_field(&s->ps, "affine", NTENS, PF_DOUBLE, "1/T",
-                                  PF_RESTART);
-  return s->faff < 0 ? -1 : 0;
+                                  PF_OUTPUT | PF_RESTART);
+    if (s->faff < 0) return -1;
+    for (c = 0; c < NTENS; c++)
+      s->ps.fields[s->faff].comp_names[c] = particles_tens_name(c);
+  }
+  return 0;
 }
 
 int sim_enable_bonds(sim *s) {
@@ -331,7 +338,36 @@ double sim_total(const sim *s) {
 double sim_residual(const sim *s) {
   const sim_energy *e = &s->e;
   return e->initial + e->boundary + e->thermal - e->friction - e->plastic -
-         e->viscous - sim_total(s);
+         e->viscous - e->settled - sim_total(s);
+}
+
+double sim_scale(const sim *s) {
+  const sim_energy *e = &s->e;
+  return (e->initial - e->potential0) + fabs(e->boundary) + fabs(e->thermal) +
+         fabs(e->potential - e->potential0) + e->settled;
+}
+
+double sim_stop(sim *s) {
+  particles *ps = &s->ps;
+  double before, after;
+  size_t i;
+  int d;
+  if (!s->started) sim_begin(s);
+  sim_measure(s);
+  before = s->e.kinetic;
+  for (i = 0; i < ps->n; i++) {
+    if (s->bmat[ps->body[i]] < 0) continue; /* driven: keeps its drive */
+    for (d = 0; d < DIM; d++) ps->v[d][i] = 0;
+    if (s->faff >= 0) {
+      const pfield *f = &ps->fields[s->faff];
+      int c;
+      for (c = 0; c < f->ncomp; c++) ((double *)*f->slot[c])[i] = 0;
+    }
+  }
+  sim_measure(s);
+  after = s->e.kinetic;
+  s->e.settled += before - after;
+  return before - after;
 }
 
 /* each material's update over whole chunks of particles, the sums kept
@@ -413,6 +449,7 @@ void sim_begin(sim *s) {
   s->mcut = ps->n ? s->mcut_rel * mmin : 0;
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain + s->e.potential;
+  s->e.potential0 = s->e.potential;
   s->e.jmin = s->e.jmax = 1;
   s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
 }

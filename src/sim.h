@@ -71,7 +71,9 @@ typedef struct sim_energy {
   double viscous;    /* viscous dissipation (mat_viscoelastic.c) */
   double thermal;    /* work of the thermal strain on the stress (thermal.c):
                      ** what heating or cooling adds to the strain energy */
-  double initial;    /* kinetic + strain before the first step */
+  double settled;    /* kinetic energy taken out by sim_stop (settling) */
+  double initial;    /* kinetic + strain + potential before the first step */
+  double potential0; /* potential before the first step */
   double mom[DIM];
   double angmom;     /* about the origin (2-D: z component) */
   double jmin, jmax;
@@ -202,6 +204,16 @@ double sim_total(const sim *s);
 /* energy budget residual: initial + boundary + thermal - friction -
 ** plastic - viscous - total; zero up to the error of the step */
 double sim_residual(const sim *s);
+/* the budget's scale, which no choice of origin changes (the potential's
+** own value does): the kinetic and strain energy at the start plus the
+** size of every flow since, |boundary| + |thermal| + |potential change|
+** (+ what was settled away); > 0 whenever anything moved */
+double sim_scale(const sim *s);
+/* stop every particle of a body that is not driven: velocities (and
+** APIC's affine field) to zero, the kinetic energy taken out booked as
+** e.settled so the budget still closes; returns that energy.  Between
+** steps only (a settling step, sim:settle) */
+double sim_stop(sim *s);
 /* recompute kinetic energy, momenta and strain energy from particles */
 void sim_measure(sim *s);
 

@@ -11,13 +11,16 @@ the HDF5 snapshot the step names.  The arrays expected come from the
 snapshot itself (read with h5py), not from the .xmf, so a field the
 index forgets is caught:
   ncomp 1                              -> array NAME
-  components "x,y" (2-D) / "x,y,z"     -> vector NAME, 3 components
-  other ncomp > 1                      -> arrays NAME_<component name>
+  components "x,y" (2-D) / "x,y,z"     -> vector NAME: 3 components with
+                                          the XDMF 2 reader (z = 0 added),
+                                          DIM with the Xdmf3 readers
+  other ncomp > 1                      -> array NAME, ncomp components in
+                                          the snapshot's order
 Extra arrays in ParaView are an error too.  Without h5py, only the names
 listed in the .xmf are checked (and the script says so).
 
-R is the ParaView reader: XDMFReader (the XDMF 2 reader, the default
-and the one that reads these files) or Xdmf3ReaderS / Xdmf3ReaderT.
+R is the ParaView reader: XDMFReader (the XDMF 2 reader, the default),
+Xdmf3ReaderS or Xdmf3ReaderT; each must see every array.
 Prints what it found; exit status 0 when everything matches, 1 on a
 mismatch, 2 when the file cannot be read or the arguments are wrong.
 """
@@ -87,27 +90,26 @@ def steps_of(xmf):
     return steps
 
 
-def expected_arrays(h5path):
+def expected_arrays(h5path, reader):
     """{array name: (ncomp in VTK, numpy array of the values)}"""
     out = {}
     with h5py.File(h5path, "r") as f:
         dim = int(f.attrs["dim"])
         for name, d in f.items():
-            if name in ("position", "scene_source"):
+            if name in ("position", "scene_source") or not isinstance(d, h5py.Dataset):
                 continue
             a = d[()]
             comps = d.attrs.get("components")
             comps = comps.split(",") if comps else None
             if a.ndim == 1:
                 out[name] = (1, a)
-            elif comps == ["x", "y", "z"][:dim] and a.shape[1] == dim:
+            elif (comps == ["x", "y", "z"][:dim] and a.shape[1] == dim
+                  and reader == "XDMFReader"):
                 pad = np.zeros((a.shape[0], 3), dtype=a.dtype)
                 pad[:, :dim] = a
                 out[name] = (3, pad)
             else:
-                for c in range(a.shape[1]):
-                    suffix = comps[c] if comps and c < len(comps) else str(c)
-                    out[name + "_" + suffix] = (1, a[:, c])
+                out[name] = (a.shape[1], a)
         pos = f["position"][()]
     return out, pos
 
@@ -133,7 +135,7 @@ def unstructured(data):
     return data
 
 
-def check_step(i, t, n, heavy, names, grid, base):
+def check_step(i, t, n, heavy, names, grid, base, reader):
     npts, ncell = grid.GetNumberOfPoints(), grid.GetNumberOfCells()
     pd = grid.GetPointData()
     found = {pd.GetArrayName(k): pd.GetArray(k).GetNumberOfComponents()
@@ -158,7 +160,7 @@ def check_step(i, t, n, heavy, names, grid, base):
         for nm in sorted(set(want) - set(found)):
             fail("step %d: array %s listed in the .xmf but not loaded" % (i, nm))
         return
-    want, pos = expected_arrays(os.path.join(base, heavy))
+    want, pos = expected_arrays(os.path.join(base, heavy), reader)
     for nm in sorted(set(want) - set(found)):
         fail("step %d: array %s missing" % (i, nm))
     for nm in sorted(set(found) - set(want)):
@@ -210,7 +212,7 @@ def main():
             fail("step %d: reader gave no single grid" % i)
             continue
         _, heavy, names = steps[i] if i < len(steps) else (t, None, [])
-        check_step(i, t, n, heavy, names, grid, base)
+        check_step(i, t, n, heavy, names, grid, base, reader_name)
     print("check_xdmf: %s" % ("ok" if not failures else
                               "%d mismatches" % len(failures)))
     sys.exit(1 if failures else 0)

@@ -384,7 +384,11 @@ static void series(const char *dir) {
                         : "Dimensions=\"1000 3\">particles_000000.h5:/position<",
          1);
   xmfhas(path, "AttributeType=\"Vector\"", 2); /* velocity, 2 steps */
-  xmfhas(path, "<Attribute Name=\"stress_zz\"", 2);
+  /* tensors as one Matrix each (stress, F), every reader sees them */
+  xmfhas(path, "<Attribute Name=\"stress\" AttributeType=\"Matrix\"", 2);
+  xmfhas(path, "ItemType=\"HyperSlab\"", 0);
+  /* the connectivity the Xdmf3 readers need, in each non-empty step */
+  xmfhas(path, ":/xdmf/vertex</DataItem>", 2);
   xmfhas(path, "NumberOfElements=\"0\"", 1);
   strcpy(e[1].file, "a:b.h5");
   UNIT_CHECK(out_xdmf_write(path, e, 3, &a, err, sizeof err) == -1 &&

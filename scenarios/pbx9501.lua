@@ -270,9 +270,9 @@ sim:every {steps = 1, fn = function(s)
   end
   if dir ~= "" and P.images > 0 and strain_at(s.t) >= next_image - 1e-9 * P.strain then
     local tag = string.format("%03d", math.floor(100 * next_image + 0.5))
-    s:render {file = dir .. "/pbx_body_" .. tag .. ".png", by = "body", width = 900,
+    s:render {file = "pbx_body_" .. tag .. ".png", by = "body", width = 900,
               title = string.format("grains, strain %.2f", strain_at(s.t))}
-    s:render {file = dir .. "/pbx_sdiff_" .. tag .. ".png", by = "sdiff", width = 900,
+    s:render {file = "pbx_sdiff_" .. tag .. ".png", by = "sdiff", width = 900,
               title = string.format("|s1 - s2| (Pa), strain %.2f", strain_at(s.t))}
     next_image = next_image + P.images
   end

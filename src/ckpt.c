@@ -412,6 +412,7 @@ void ckpt_write(lua_State *L, int simidx) {
   h5blob b[CB_N];
   h5meta meta;
   h5prov prov;
+  h5frame fr;
   char path[1100], old[1100], err[1024], abs_scene[PATH_MAX];
   const char *scene, *source, *state = NULL;
   size_t statelen = 0;
@@ -428,6 +429,7 @@ void ckpt_write(lua_State *L, int simidx) {
   ckname(path, sizeof path, ls->outdir, ls->ck_count + 1);
   sandbox_file(L, path, "checkpoint"); /* no link followed (sandbox.h) */
   memset(&v, 0, sizeof v);
+  memset(&fr, 0, sizeof fr);
   ls->ck_count++; /* what a restart continues from */
   visit_sim(&v, s);
   visit_run(&v, L, simidx, ls, csv);
@@ -458,7 +460,8 @@ void ckpt_write(lua_State *L, int simidx) {
   }
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   source = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
-  if (v.failed || rn.bad || in.bad || fl.bad || sf.bad || pa.bad || !st || !sn) {
+  if (v.failed || rn.bad || in.bad || fl.bad || sf.bad || pa.bad || !st || !sn ||
+      run_frame(s, &fr)) {
     snprintf(err, sizeof err, "checkpoint: %s", v.failed ? v.err : "out of memory");
     r = -1;
   } else {
@@ -481,6 +484,7 @@ void ckpt_write(lua_State *L, int simidx) {
     meta.units = ls->units;
     meta.scene = scene;
     run_provenance(L, &prov);
+    meta.frame = &fr;
     ckname(path, sizeof path, ls->outdir, ls->ck_count);
     r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta,
                            &prov, b, CB_N, err, sizeof err);
@@ -495,6 +499,7 @@ void ckpt_write(lua_State *L, int simidx) {
   vlist_free(&v.in, 1);
   free(rn.b); free(in.b); free(fl.b); free(sf.b); free(pa.b);
   free(st); free(sn);
+  out_h5_frame_free(&fr);
   lua_settop(L, top);
   if (r) {
     ls->ck_count--;

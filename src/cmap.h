@@ -19,7 +19,7 @@ enum { CMAP_SEQ, CMAP_DIV };
 
 /* colour of t in [0, 1] (clamped) on map */
 uint32_t cmap_color(int map, double t);
-/* colour k of the categorical palette (k >= 0; cycles) */
+/* colour k of the categorical palette (k >= 0; cycles); none is grey */
 uint32_t cmap_category(int k);
 
 #endif

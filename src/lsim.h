@@ -156,5 +156,10 @@ int run_snapshot(lua_State *L, lsim *ls, const char *path);
 ** from); pushes 3 values that hold the strings: pop them after writing */
 struct h5prov;
 void run_provenance(lua_State *L, struct h5prov *prov);
+/* the domain and the bodies' names and driven flags for a snapshot or a
+** checkpoint (out_h5.h); 0, or -1 if out of memory.  Release with
+** out_h5_frame_free (also after a failure). */
+struct h5frame;
+int run_frame(const sim *s, struct h5frame *fr);
 
 #endif

@@ -3,9 +3,14 @@
 ** now, mvmpm.plot{...} draws line plots.  Both run between steps only
 ** (as every Lua call does) and write PNG files under a temporary name.
 **
-**   sim:render{file = "x.png", by = "body" | "pressure" | "sdiff" |
-**              "speed" | "FIELD[.COMP]", width = 800, range = {lo, hi},
-**              title = "...", colormap = "auto" | "seq" | "div"}
+**   sim:render{file = "x.png" | "x.svg", by = "body" | "pressure" |
+**              "sdiff" | "speed" | "FIELD[.COMP]", width = 800,
+**              range = {lo, hi} | "robust" | "full", title = "...",
+**              colormap = "auto" | "seq" | "div", log = false,
+**              axes = true, matrix = "NAME"}
+**   A relative file goes in the run's output directory when it has one
+**   (mvmpm run, or the scene's output{dir = ...}), else in the current
+**   directory.
 **   mvmpm.plot{file = "x.png", title =, xlabel =, ylabel =, xlog =,
 **              ylog =, width = 800, height = 560, xrange =, yrange =,
 **              series = {{x = {...}, y = {...}, label = "...",
@@ -64,8 +69,8 @@ static const char *reqstr(lua_State *L, int idx, const char *what,
                           const char *key) {
   const char *s = optstr(L, idx, what, key, NULL);
   if (!s || !s[0])
-    luaL_error(L, "%s: field '%s' is required (a file name ending in .png)",
-               what, key);
+    luaL_error(L, "%s: field '%s' is required (a file name ending in .png%s)",
+               what, key, strcmp(what, "render") == 0 ? " or .svg" : "");
   return s;
 }
 
@@ -82,27 +87,57 @@ static int optrange(lua_State *L, int idx, const char *what, const char *key,
   return 1;
 }
 
+/*
+** Where sim:render writes: under --sandbox inside its root
+** (sandbox_path); else a relative name goes in the run's output
+** directory, made if need be, when the run writes output.
+*/
+static const char *render_path(lua_State *L, lsim *ls, const char *file,
+                               char *buf, size_t len) {
+  const char *what = "render";
+  char err[1200];
+  if (sandbox_on(L)) return sandbox_path(L, file, what, buf, len);
+  if (file[0] == '/' || !ls->out_enabled || !ls->outdir[0]) return file;
+  if ((size_t)snprintf(buf, len, "%s/%s", ls->outdir, file) >= len)
+    luaL_error(L, "%s: path '%s/%s' is too long", what, ls->outdir, file);
+  if (run_mkdirs(ls->outdir, err, sizeof err))
+    luaL_error(L, "%s: %s", what, err);
+  return buf;
+}
+
 /* sim:render{...} */
 int lrender_sim(lua_State *L) {
   static const char *const keys[] = {"file", "by", "width", "range", "title",
-                                     "colormap", NULL};
+      "colormap", "log", "axes", "matrix", NULL};
+  static const char *const autos[] = {"robust", "full", NULL};
   const char *what = "render", *file, *title;
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   render_opts o;
   char err[2048], deftitle[160], path[1100];
   const char **names;
-  int b, d;
+  int b, d, *driven;
   luaL_checktype(L, 2, LUA_TTABLE);
   lua_settop(L, 2);
   lsim_hold(L, ls); /* the options table may have metamethods */
   chk_keys(L, 2, what, keys);
   memset(&o, 0, sizeof o);
-  file = sandbox_path(L, reqstr(L, 2, what, "file"), what, path, sizeof path);
+  file = render_path(L, ls, reqstr(L, 2, what, "file"), path, sizeof path);
   o.by = optstr(L, 2, what, "by", "body");
   o.width = pixels(L, 2, what, "width", 800, RENDER_MINW, PNG_MAXDIM);
-  o.has_range = optrange(L, 2, what, "range", o.range);
+  lua_getfield(L, 2, "range");
+  if (lua_type(L, -1) == LUA_TSTRING) {
+    lua_pop(L, 1);
+    o.autorange = chk_option(L, 2, what, "range", RENDER_ROBUST, autos);
+  } else {
+    lua_pop(L, 1);
+    o.has_range = optrange(L, 2, what, "range", o.range);
+  }
   o.cmap = chk_option(L, 2, what, "colormap", 0, cmaps) - 1; /* auto = -1 */
+  o.log = chk_bool(L, 2, what, "log", 0);
+  o.noaxes = !chk_bool(L, 2, what, "axes", 1);
+  o.matrix = optstr(L, 2, what, "matrix", NULL);
+  o.unit = render_length_unit(ls->units);
   if (render_values(&s->ps, o.by, 0, NULL, err, sizeof err) < 0)
     luaL_error(L, "%s: field 'by': %s", what, err);
   snprintf(deftitle, sizeof deftitle, "%s   t = %.6g", o.by, s->t);
@@ -114,10 +149,20 @@ int lrender_sim(lua_State *L) {
   }
   /* names live in the bodies; the array in a userdata Lua will collect */
   names = lua_newuserdatauv(L, (s->nbody ? s->nbody : 1) * sizeof *names, 0);
-  for (b = 0; b < s->nbody; b++) names[b] = s->bodies[b].name;
+  driven = lua_newuserdatauv(L, (s->nbody ? s->nbody : 1) * sizeof *driven, 0);
+  for (b = 0; b < s->nbody; b++) {
+    names[b] = s->bodies[b].name;
+    driven[b] = s->bodies[b].driven != 0;
+  }
   o.names = names;
+  o.driven = driven;
   o.nnames = s->nbody;
-  if (render_png(file, &s->ps, &o, err, sizeof err))
+  if (o.matrix) {
+    for (b = 0; b < s->nbody && strcmp(names[b], o.matrix) != 0; b++) {}
+    if (b == s->nbody)
+      luaL_error(L, "%s: field 'matrix': no body named '%s'", what, o.matrix);
+  }
+  if (render_file(file, &s->ps, &o, err, sizeof err))
     luaL_error(L, "%s: %s", what, err);
   return 0;
 }

@@ -77,16 +77,23 @@ static const cmdhelp helps[] = {
 "       and tolerance; ends with 'N passed, M failed' (status 1 if any\n"
 "       failed)\n"},
   {"render",
-"render SNAPSHOT.h5 [--by KEY] [--out FILE.png] [--width N]\n"
-"                [--range LO,HI] [--colormap auto|seq|div] [--title TEXT]\n"
+"render SNAPSHOT.h5|CHECKPOINT.h5 [--by KEY] [--out FILE.png|.svg]\n"
+"                [--width N] [--range LO,HI|robust|full] [--log] [--no-axes]\n"
+"                [--colormap auto|seq|div] [--title TEXT] [--matrix BODY]\n"
 "                [--domain X0,X1,Y0,Y1]\n",
-"render draws a snapshot's particles as a PNG, coloured by KEY: body,\n"
-"       pressure, sdiff (principal stress difference), speed, or a field\n"
-"       such as velocity.x, stress.xy, mass (default: body); FILE defaults\n"
-"       to the snapshot's name with _KEY.png\n"
-"--range  the colour scale's ends (default: the data's range)\n"
+"render draws a snapshot's or a checkpoint's particles as a PNG or SVG,\n"
+"       coloured by KEY: body, pressure, sdiff (principal stress\n"
+"       difference), speed, or a field such as velocity.x, stress.xy, mass\n"
+"       (default: body); FILE defaults to the snapshot's name with _KEY.png\n"
+"--range  the colour scale's ends (default robust: the 1st to 99th\n"
+"       percentile; full: min to max)\n"
+"--log  colour by log10 of the value (every value must be above zero)\n"
 "--colormap  seq (one hue), div (two, centred on 0) or auto\n"
-"--domain  the part of the plane drawn (default: the particles')\n"},
+"--domain  the part of the plane drawn (default: the scene's domain the\n"
+"       file records, else the particles')\n"
+"--no-axes  no ticks, tick labels or axis titles\n"
+"--matrix  the body drawn grey among grains (default: one named binder or\n"
+"       matrix, else a body holding most of the particles)\n"},
 };
 #define NCMD (int)(sizeof helps / sizeof helps[0])
 

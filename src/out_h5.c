@@ -417,6 +417,71 @@ static int putblobs(h5s *S, const h5blob *b, int nb) {
 }
 
 /*
+** The scene's frame: the domain as root attributes of shape (dim), the
+** bodies in the group "bodies" (a group, so readers that take every
+** root dataset for a particle field pass over it).
+*/
+static int putvec(h5s *S, const char *name, hid_t ftype, hid_t mtype,
+                  const void *v) {
+  hsize_t n = DIM;
+  hid_t sp, a = -1;
+  int r = 0;
+  errno = 0;
+  sp = H5Screate_simple(1, &n, NULL);
+  if (sp >= 0)
+    a = H5Acreate2(S->file, name, ftype, sp, H5P_DEFAULT, H5P_DEFAULT);
+  if (a < 0 || H5Awrite(a, mtype, v) < 0)
+    r = fail(S, "cannot write attribute '%s' of '/'", name);
+  if (a >= 0) H5Aclose(a);
+  if (sp >= 0) H5Sclose(sp);
+  return r;
+}
+
+/* a 1-D dataset of n entries in g */
+static int put1d(h5s *S, hid_t g, const char *name, hid_t ftype, hid_t mtype,
+                 size_t n, const void *v) {
+  hsize_t dn = n;
+  hid_t sp, d = -1;
+  int r = 0;
+  errno = 0;
+  sp = H5Screate_simple(1, &dn, NULL);
+  if (sp >= 0)
+    d = H5Dcreate2(g, name, ftype, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  if (d < 0 || (n > 0 && H5Dwrite(d, mtype, H5S_ALL, H5S_ALL, H5P_DEFAULT, v) < 0))
+    r = fail(S, "cannot write dataset 'bodies/%s'", name);
+  if (d >= 0) H5Dclose(d);
+  if (sp >= 0) H5Sclose(sp);
+  return r;
+}
+
+static int putframe(h5s *S, const h5frame *fr) {
+  int per[DIM], d, b, r;
+  const char **names;
+  hid_t g, t;
+  if (!fr) return 0;
+  for (d = 0; d < DIM; d++) per[d] = fr->periodic[d] != 0;
+  if (putvec(S, "domain_lo", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, fr->lo) ||
+      putvec(S, "domain_hi", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, fr->hi) ||
+      putvec(S, "periodic", H5T_STD_I32LE, H5T_NATIVE_INT, per))
+    return -1;
+  errno = 0;
+  names = malloc((fr->nbody ? fr->nbody : 1) * sizeof *names);
+  if (!names) return fail(S, "out of memory");
+  for (b = 0; b < fr->nbody; b++) names[b] = fr->name[b];
+  g = H5Gcreate2(S->file, "bodies", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  t = strtype();
+  if (g < 0 || t < 0) r = fail(S, "cannot create group 'bodies'");
+  else
+    r = (put1d(S, g, "name", t, t, (size_t)fr->nbody, names) ||
+         put1d(S, g, "driven", H5T_STD_I32LE, H5T_NATIVE_INT32,
+               (size_t)fr->nbody, fr->driven)) ? -1 : 0;
+  if (t >= 0) H5Tclose(t);
+  if (g >= 0) H5Gclose(g);
+  free(names);
+  return r;
+}
+
+/*
 ** /xdmf/vertex: 0 ... n-1, the connectivity of the XDMF index's
 ** polyvertex grid (out_xdmf.c).  ParaView's XDMF 2 reader makes one
 ** vertex per point from the counts alone; its Xdmf3 readers make none
@@ -463,7 +528,8 @@ static int build(h5s *S, const char *tmp, const particles *ps,
                  size_t *size) {
   int f;
   if (deflate_ok(S) || stage(S, ps) || create(S, tmp, ps) ||
-      putmeta(S, meta) || putprov(S, S->prov))
+      putmeta(S, meta) || putprov(S, S->prov) ||
+      putframe(S, meta->frame))
     return -1;
   for (f = 0; f < ps->nfields; f++)
     if ((ps->fields[f].flags & S->flags) && putfield(S, ps, &ps->fields[f]))
@@ -638,6 +704,147 @@ static int getmeta(h5s *S, h5meta *meta, const char *want) {
     return -1;
   meta->step = (long)step;
   return 0;
+}
+
+/* a root attribute of shape (dim), converted to mtype; 1 if absent */
+static int getvec(h5s *S, const char *name, hid_t mtype, void *v) {
+  hid_t a, sp = -1;
+  hsize_t n = 0;
+  int r = -1;
+  errno = 0;
+  if (H5Aexists(S->file, name) <= 0) return 1;
+  a = H5Aopen(S->file, name, H5P_DEFAULT);
+  if (a >= 0) sp = H5Aget_space(a);
+  if (sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1 &&
+      H5Sget_simple_extent_dims(sp, &n, NULL) == 1 && n == DIM &&
+      H5Aread(a, mtype, v) >= 0)
+    r = 0;
+  else {
+    errno = 0;
+    fail(S, "attribute '%s' must hold %d numbers", name, DIM);
+  }
+  if (sp >= 0) H5Sclose(sp);
+  if (a >= 0) H5Aclose(a);
+  return r;
+}
+
+/* bodies/NAME: rank 1 with n entries (n set by the first one read) */
+static hid_t open1d(h5s *S, hid_t g, const char *name, hsize_t *n) {
+  hid_t d, sp = -1;
+  hsize_t k = 0;
+  int ok = 0;
+  errno = 0;
+  if (H5Lexists(g, name, H5P_DEFAULT) <= 0) {
+    fail(S, "group 'bodies' has no dataset '%s'", name);
+    return -1;
+  }
+  d = H5Dopen2(g, name, H5P_DEFAULT);
+  if (d >= 0) sp = H5Dget_space(d);
+  if (sp >= 0 && H5Sget_simple_extent_ndims(sp) == 1 &&
+      H5Sget_simple_extent_dims(sp, &k, NULL) == 1 && k <= H5_MAXBODY &&
+      (*n == (hsize_t)-1 || k == *n))
+    ok = 1;
+  if (sp >= 0) H5Sclose(sp);
+  if (!ok) {
+    errno = 0;
+    fail(S, "dataset 'bodies/%s' must be 1-D with at most %d entries, as "
+         "many as the other", name, H5_MAXBODY);
+    if (d >= 0) H5Dclose(d);
+    return -1;
+  }
+  *n = k;
+  return d;
+}
+
+/* the bodies' names: strings of any kind, cut to H5_NAMELEN - 1 bytes */
+static int getnames(h5s *S, hid_t d, h5frame *fr, size_t n) {
+  hid_t ft = H5Dget_type(d), mt = -1;
+  int r = -1;
+  size_t b;
+  errno = 0;
+  if (ft < 0 || H5Tget_class(ft) != H5T_STRING) {
+    if (ft >= 0) H5Tclose(ft);
+    return fail(S, "dataset 'bodies/name' does not hold strings");
+  }
+  if (H5Tis_variable_str(ft) > 0) {
+    char **s = calloc(n ? n : 1, sizeof *s);
+    mt = strtype();
+    if (s && mt >= 0 &&
+        (n == 0 || H5Dread(d, mt, H5S_ALL, H5S_ALL, H5P_DEFAULT, s) >= 0)) {
+      for (b = 0; b < n; b++) {
+        snprintf(fr->name[b], H5_NAMELEN, "%s", s[b] ? s[b] : "");
+        H5free_memory(s[b]);
+      }
+      r = 0;
+    }
+    free(s);
+  } else {
+    mt = H5Tcopy(H5T_C_S1); /* converted to our size, NUL-terminated */
+    if (mt >= 0 && H5Tset_size(mt, H5_NAMELEN) >= 0 &&
+        (n == 0 || H5Dread(d, mt, H5S_ALL, H5S_ALL, H5P_DEFAULT, fr->name) >= 0))
+      r = 0;
+  }
+  if (mt >= 0) H5Tclose(mt);
+  H5Tclose(ft);
+  if (r < 0) fail(S, "cannot read dataset 'bodies/name'");
+  return r;
+}
+
+/*
+** The frame, if the file has one (older files have none: has_domain and
+** nbody stay 0).  Only what is there is read; whoever draws with it
+** judges the numbers.
+*/
+static int getframe(h5s *S, h5frame *fr) {
+  int per[DIM], d, k;
+  hsize_t n = (hsize_t)-1;
+  hid_t g, dn = -1, dd = -1;
+  if (!fr) return 0;
+  memset(fr, 0, sizeof *fr);
+  if (getstr(S, S->file, "/", "units", fr->units, sizeof fr->units) < 0)
+    return -1;
+  k = getvec(S, "domain_lo", H5T_NATIVE_DOUBLE, fr->lo);
+  if (k < 0) return -1;
+  if (k == 0) {
+    if (getvec(S, "domain_hi", H5T_NATIVE_DOUBLE, fr->hi) ||
+        getvec(S, "periodic", H5T_NATIVE_INT, per))
+      return S->failed ? -1 : fail(S, "attribute 'domain_lo' without "
+                                   "'domain_hi' and 'periodic'");
+    for (d = 0; d < DIM; d++) fr->periodic[d] = per[d] != 0;
+    fr->has_domain = 1;
+  }
+  errno = 0;
+  if (H5Lexists(S->file, "bodies", H5P_DEFAULT) <= 0) return 0;
+  g = H5Gopen2(S->file, "bodies", H5P_DEFAULT);
+  if (g < 0) return fail(S, "cannot open group 'bodies'");
+  dn = open1d(S, g, "name", &n);
+  if (dn >= 0) dd = open1d(S, g, "driven", &n);
+  if (dd >= 0) {
+    fr->name = calloc(n ? n : 1, sizeof *fr->name);
+    fr->driven = calloc(n ? n : 1, sizeof *fr->driven);
+    errno = 0;
+    if (!fr->name || !fr->driven) fail(S, "out of memory");
+    else if (getnames(S, dn, fr, (size_t)n) == 0) {
+      errno = 0;
+      if (n > 0 && H5Dread(dd, H5T_NATIVE_INT32, H5S_ALL, H5S_ALL,
+                           H5P_DEFAULT, fr->driven) < 0)
+        fail(S, "cannot read dataset 'bodies/driven'");
+      else fr->nbody = (int)n;
+    }
+  }
+  if (dd >= 0) H5Dclose(dd);
+  if (dn >= 0) H5Dclose(dn);
+  H5Gclose(g);
+  return S->failed ? -1 : 0;
+}
+
+void out_h5_frame_free(h5frame *f) {
+  if (!f) return;
+  free(f->name);
+  free(f->driven);
+  f->name = NULL;
+  f->driven = NULL;
+  f->nbody = 0;
 }
 
 /* shape and type of a field dataset, checked against what a field can be */
@@ -880,34 +1087,53 @@ static int openimage(h5s *S, const char *sealed) {
   return S->file < 0 ? fail(S, "cannot open file (not HDF5, or damaged)") : 0;
 }
 
-int out_h5_read_state(const char *path, const char *format, particles *ps,
-                      h5meta *meta, h5blob *b, int nb, char *err,
-                      size_t errlen) {
+/* the readers' work; fr may be NULL */
+static int readall(const char *path, const char *format, particles *ps,
+                   h5meta *meta, h5frame *fr, h5blob *b, int nb, char *err,
+                   size_t errlen) {
   h5s S;
   h5meta dummy;
   const char *want = format ? format : FORMAT;
   int r, k;
-  if (!meta) meta = &dummy;
+  if (!meta) {
+    memset(&dummy, 0, sizeof dummy);
+    meta = &dummy;
+  }
   for (k = 0; k < nb; k++) b[k].data = NULL, b[k].n = 0;
   begin(&S, path, err, errlen);
   meta->units = meta->scene = meta->source = NULL;
+  meta->frame = NULL;
   errno = 0;
   if (ps->n != 0) {
     r = fail(&S, "cannot read into a store that already holds particles");
   } else {
     r = openimage(&S, format);
     if (r == 0)
-      r = (getmeta(&S, meta, want) || getfields(&S, ps) ||
-           getblobs(&S, b, nb)) ? -1 : 0;
+      r = (getmeta(&S, meta, want) || getframe(&S, fr) ||
+           getfields(&S, ps) || getblobs(&S, b, nb)) ? -1 : 0;
   }
   end(&S);
-  if (r != 0) ps->n = 0;
+  if (r != 0) {
+    ps->n = 0;
+    out_h5_frame_free(fr);
+  }
   return r;
+}
+
+int out_h5_read_state(const char *path, const char *format, particles *ps,
+                      h5meta *meta, h5blob *b, int nb, char *err,
+                      size_t errlen) {
+  return readall(path, format, ps, meta, NULL, b, nb, err, errlen);
 }
 
 int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
                 size_t errlen) {
-  return out_h5_read_state(path, NULL, ps, meta, NULL, 0, err, errlen);
+  return readall(path, NULL, ps, meta, NULL, NULL, 0, err, errlen);
+}
+
+int out_h5_read_frame(const char *path, const char *format, particles *ps,
+                      h5meta *meta, h5frame *fr, char *err, size_t errlen) {
+  return readall(path, format, ps, meta, fr, NULL, 0, err, errlen);
 }
 
 /* }====================================================== */

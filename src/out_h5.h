@@ -19,6 +19,14 @@
 **     provenance strings given: "version", "build", "command", "params"
 **     (one "name = value" line per scene parameter in force), and in a
 **     continued run "restarted_from" (the checkpoint).
+**   the scene's frame, when meta->frame is given (files from before it
+**     lack them; readers fall back on the particles' extent):
+**     root attributes "domain_lo", "domain_hi" (F64, shape (dim)) and
+**     "periodic" (I32, shape (dim), 1 = periodic); group "bodies" with
+**     datasets "name" (strings, shape (nbody)) and "driven" (I32,
+**     shape (nbody)), entry b for the particles whose "body" is b.  A
+**     group, so that readers that take every root dataset for a field
+**     pass over it.
 ** Strings are variable-length UTF-8 (h5py reads them as str).
 ** In front of it all: the 512-byte checksum block of h5sum.h (an HDF5
 ** user block); reading checks it before HDF5 sees the file.
@@ -33,7 +41,23 @@
 #define mvmpm_out_h5_h
 
 #include <stddef.h>
+#include <stdint.h>
 #include "particles.h"
+
+/* the domain and the bodies' names (out_h5.h's layout) */
+#define H5_NAMELEN 32
+#define H5_MAXBODY (1 << 20)  /* most bodies a file may name */
+typedef struct h5frame {
+  int has_domain;         /* reading: the file holds lo, hi, periodic */
+  double lo[DIM], hi[DIM];
+  int periodic[DIM];
+  int nbody;              /* entries of name and driven; 0: none stored */
+  char (*name)[H5_NAMELEN];
+  int32_t *driven;
+  char units[32];         /* reading: the "units" attribute ("" if none) */
+} h5frame;
+/* release what out_h5_read_frame allocated in f */
+void out_h5_frame_free(h5frame *f);
 
 typedef struct h5meta {
   double time;
@@ -42,6 +66,8 @@ typedef struct h5meta {
   const char *units;      /* e.g. "nondimensional" or "SI" */
   const char *scene;      /* scene file name */
   const char *source;     /* the scene's source text (may be NULL) */
+  const h5frame *frame;   /* writing: stored when not NULL (reading sets
+                             it NULL; see out_h5_read_frame) */
 } h5meta;
 /* what made a file, each written as a root string attribute when not
 ** NULL (out_h5_write_prov, out_h5_write_state) */
@@ -100,5 +126,11 @@ int out_h5_read_state(const char *path, const char *format, particles *ps,
 ** fields may have been added; particles_free releases it as usual. */
 int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
                 size_t errlen);
+/* out_h5_read (format NULL) or, for a checkpoint's particles,
+** out_h5_read_state without blobs, filling fr with the file's frame
+** and units: a file from before they were stored leaves has_domain and
+** nbody 0 (release fr with out_h5_frame_free, also after a failure) */
+int out_h5_read_frame(const char *path, const char *format, particles *ps,
+                      h5meta *meta, h5frame *fr, char *err, size_t errlen);
 
 #endif

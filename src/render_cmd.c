@@ -1,10 +1,14 @@
 /*
-** render_cmd.c - the render command: read a snapshot, draw it.
+** render_cmd.c - the render command: read a snapshot or a checkpoint,
+** draw it.  The picture is framed by the domain the file records and
+** its legend names the bodies; files from before those were stored are
+** framed by the particles' extent and say "body N".
 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "ckpt.h"
 #include "cmap.h"
 #include "out_h5.h"
 #include "pcheck.h"
@@ -32,22 +36,40 @@ static int numlist(const char *s, double *v, int n) {
 
 static int usage_error(const char *msg, const char *arg) {
   fprintf(stderr, "%s: %s%s%s\n"
-          "usage: mvmpm render SNAPSHOT.h5 [--by KEY] [--out FILE.png] "
-          "[--width N] [--range LO,HI]\n"
-          "                    [--colormap auto|seq|div] [--title TEXT] "
-          "[--domain X0,X1,Y0,Y1]\n", prog, msg, arg ? " " : "", arg ? arg : "");
+          "usage: mvmpm render SNAPSHOT.h5|CHECKPOINT.h5 [--by KEY] "
+          "[--out FILE.png|FILE.svg] [--width N]\n"
+          "                    [--range LO,HI|robust|full] [--log] "
+          "[--colormap auto|seq|div] [--title TEXT]\n"
+          "                    [--domain X0,X1,Y0,Y1] [--no-axes] "
+          "[--matrix BODY]\n", prog, msg, arg ? " " : "", arg ? arg : "");
   return 2;
+}
+
+/* a snapshot, else a checkpoint (its particle fields; the run's state
+** is not read) */
+static int readfile(const char *snap, particles *ps, h5meta *meta,
+                    h5frame *fr, int *ck, char *err, size_t errlen) {
+  *ck = 0;
+  if (out_h5_read_frame(snap, NULL, ps, meta, fr, err, errlen) == 0) return 0;
+  if (!strstr(err, "format '" CKPT_FORMAT "'")) return -1;
+  particles_free(ps);
+  particles_init(ps);
+  *ck = 1;
+  return out_h5_read_frame(snap, CKPT_FORMAT, ps, meta, fr, err, errlen);
 }
 
 int render_cmd(int argc, char **argv) {
   const char *snap = NULL, *out = NULL, *title = NULL;
   char outbuf[4096], titlebuf[160], err[2048];
+  const char **names = NULL;
+  int *driven = NULL;
   render_opts o;
   pcheck_lim lim = {0};
   particles ps;
   h5meta meta;
+  h5frame fr;
   double dom[4];
-  int i, has_domain = 0, rc = 0, d;
+  int i, has_domain = 0, rc = 0, d, ck = 0;
   memset(&o, 0, sizeof o);
   o.by = "body";
   o.width = 800;
@@ -57,11 +79,14 @@ int render_cmd(int argc, char **argv) {
     int takes = strcmp(a, "--by") == 0 || strcmp(a, "--out") == 0 ||
                 strcmp(a, "--width") == 0 || strcmp(a, "--range") == 0 ||
                 strcmp(a, "--colormap") == 0 || strcmp(a, "--title") == 0 ||
-                strcmp(a, "--domain") == 0;
+                strcmp(a, "--domain") == 0 || strcmp(a, "--matrix") == 0;
     if (takes && !val) return usage_error("missing value after", a);
     if (strcmp(a, "--by") == 0) o.by = val;
     else if (strcmp(a, "--out") == 0) out = val;
     else if (strcmp(a, "--title") == 0) title = val;
+    else if (strcmp(a, "--matrix") == 0) o.matrix = val;
+    else if (strcmp(a, "--log") == 0) o.log = 1;
+    else if (strcmp(a, "--no-axes") == 0) o.noaxes = 1;
     else if (strcmp(a, "--width") == 0) {
       char *end;
       long w = strtol(val, &end, 10);
@@ -72,12 +97,13 @@ int render_cmd(int argc, char **argv) {
       }
       o.width = (int)w;
     } else if (strcmp(a, "--range") == 0) {
-      if (numlist(val, o.range, 2) || !(o.range[1] > o.range[0])) {
-        fprintf(stderr, "%s: --range must be LO,HI with LO < HI (got '%s')\n",
-                prog, val);
+      if (strcmp(val, "robust") == 0) o.autorange = RENDER_ROBUST;
+      else if (strcmp(val, "full") == 0) o.autorange = RENDER_FULL;
+      else if (numlist(val, o.range, 2) || !(o.range[1] > o.range[0])) {
+        fprintf(stderr, "%s: --range must be LO,HI with LO < HI, robust or "
+                "full (got '%s')\n", prog, val);
         return 2;
-      }
-      o.has_range = 1;
+      } else o.has_range = 1;
     } else if (strcmp(a, "--colormap") == 0) {
       if (strcmp(val, "auto") == 0) o.cmap = RENDER_AUTO;
       else if (strcmp(val, "seq") == 0) o.cmap = CMAP_SEQ;
@@ -111,7 +137,8 @@ int render_cmd(int argc, char **argv) {
 
   particles_init(&ps);
   memset(&meta, 0, sizeof meta);
-  if (out_h5_read(snap, &ps, &meta, err, sizeof err)) {
+  memset(&fr, 0, sizeof fr);
+  if (readfile(snap, &ps, &meta, &fr, &ck, err, sizeof err)) {
     fprintf(stderr, "%s: %s\n", prog, err);
     particles_free(&ps);
     return 1;
@@ -121,23 +148,63 @@ int render_cmd(int argc, char **argv) {
   lim.nbody = PCHECK_MAXBODY;
   if (!(ps.fields[particles_find(&ps, "position")].flags & PF_READ)) {
     fprintf(stderr, "%s: %s: no dataset 'position'\n", prog, snap);
-    particles_free(&ps);
-    return 1;
+    rc = 1;
+    goto done;
   }
   if (pcheck_particles(snap, &ps, &lim, err, sizeof err)) {
     fprintf(stderr, "%s: %s\n", prog, err);
-    particles_free(&ps);
-    return 1;
+    rc = 1;
+    goto done;
   }
-  o.need = PF_OUTPUT;
+  /* a checkpoint's fields are those it was written with (PF_RESTART) */
+  o.need = ck ? PF_READ : PF_OUTPUT;
   if (render_values(&ps, o.by, o.need, NULL, err, sizeof err) < 0) {
     fprintf(stderr, "%s: %s: %s\n", prog, snap, err);
-    particles_free(&ps);
-    return 1;
+    rc = 1;
+    goto done;
   }
+  for (d = 0; fr.has_domain && d < 2; d++)
+    if (!(isfinite(fr.lo[d]) && isfinite(fr.hi[d]) && fr.hi[d] > fr.lo[d])) {
+      fprintf(stderr, "%s: %s: the stored domain [%g, %g] x [%g, %g] is not "
+              "a finite box (give --domain X0,X1,Y0,Y1)\n", prog, snap,
+              fr.lo[0], fr.hi[0], fr.lo[1], fr.hi[1]);
+      rc = 1;
+      goto done;
+    }
+  if (fr.nbody > 0) {
+    names = malloc(fr.nbody * sizeof *names);
+    driven = malloc(fr.nbody * sizeof *driven);
+    if (!names || !driven) {
+      fprintf(stderr, "%s: out of memory\n", prog);
+      rc = 1;
+      goto done;
+    }
+    for (i = 0; i < fr.nbody; i++) {
+      names[i] = fr.name[i];
+      driven[i] = fr.driven[i] != 0;
+    }
+    o.names = names;
+    o.driven = driven;
+    o.nnames = fr.nbody;
+  }
+  if (o.matrix) {
+    for (i = 0; i < fr.nbody && strcmp(fr.name[i], o.matrix) != 0; i++) {}
+    if (i == fr.nbody) {
+      fprintf(stderr, "%s: %s: --matrix: no body named '%s'%s\n", prog, snap,
+              o.matrix, fr.nbody ? "" : " (the file names none)");
+      rc = 1;
+      goto done;
+    }
+  }
+  o.unit = render_length_unit(fr.units);
   if (has_domain) {
     o.lo[0] = dom[0]; o.hi[0] = dom[1];
     o.lo[1] = dom[2]; o.hi[1] = dom[3];
+  } else if (fr.has_domain) {
+    for (d = 0; d < 2; d++) {
+      o.lo[d] = fr.lo[d];
+      o.hi[d] = fr.hi[d];
+    }
   } else {
     size_t k;
     double pad = meta.cell > 0 ? meta.cell : 0;
@@ -161,11 +228,15 @@ int render_cmd(int argc, char **argv) {
     title = titlebuf;
   }
   o.title = title;
-  if (render_png(out, &ps, &o, err, sizeof err)) {
+  if (render_file(out, &ps, &o, err, sizeof err)) {
     fprintf(stderr, "%s: %s\n", prog, err);
     rc = 1;
   } else
     printf("%s: %zu particles, t = %g -> %s\n", snap, ps.n, meta.time, out);
+done:
+  free(names);
+  free(driven);
+  out_h5_frame_free(&fr);
   particles_free(&ps);
   return rc;
 }

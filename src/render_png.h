@@ -19,21 +19,47 @@
 ** A field of the store with one of the derived names wins over the
 ** derivation.  NaN values are drawn grey (CMAP_NAN).
 **
-** Colour range: as given, else the values' min and max, or +-max|v| with
-** the diverging map.  Colormap "auto" picks the diverging map when the
-** range holds both signs, else the sequential one.
+** Colour range: as given; else (RENDER_ROBUST) the 1st to 99th
+** percentile of the finite values, so that a few outliers do not wash
+** out the rest (the true min and max are printed under the bar, and
+** the whole extent is used when the percentiles are equal or within
+** 1e-9 of the largest |value|); RENDER_FULL takes min and max.  With
+** the diverging map the range is +-max|end|.  A component whose values
+** are all within RENDER_ROUNDOFF of its field's largest component (e.g.
+** stress.xy of a state with stress.xx = 1e5 and stress.xy = 1e-13) is
+** round-off: its range is that of the field, so it draws as zero.
+** Colormap "auto" picks the diverging map when the range holds both
+** signs, else the sequential one.  log: the colour goes with log10 of
+** the value; the range must be above zero (data or given), else an
+** error says so.
+**
+** Around the domain: ticks with labels in world units, axis titles
+** "x (UNIT)" and "y (UNIT)" (without a unit when unit is NULL; metres
+** become mm under 0.1 m of width and μm under 0.1 mm), and a scale bar
+** of a 1-2-5 length near a fifth of the width under it; noaxes leaves out the ticks and
+** titles.  By body: a categorical colour per body, except that a matrix
+** (the body named by matrix; else one whose name begins with "binder"
+** or "matrix"; else, among three or more bodies, one holding over a
+** quarter of the particles and twice any other's) is drawn in the
+** neutral RENDER_MATRIX grey, which no grain colour is.
 **
 ** Output is a function of the input alone (no clocks, no randomness), so
-** the same store gives the same bytes.
+** the same store gives the same bytes.  A file name ending in ".svg"
+** gets the same picture as SVG (render_file): particles as polygons,
+** text as text.
 */
 #ifndef mvmpm_render_png_h
 #define mvmpm_render_png_h
 
 #include <stddef.h>
+#include <stdint.h>
 #include "canvas.h"
 #include "particles.h"
 
 #define RENDER_AUTO (-1)     /* colormap chosen from the data */
+#define RENDER_MATRIX 0xBDBDBDu /* a matrix body's colour */
+#define RENDER_ROUNDOFF 1e-9 /* relative size of round-off */
+enum { RENDER_ROBUST, RENDER_FULL }; /* automatic colour ranges */
 #define RENDER_MINW 120      /* narrowest image */
 
 typedef struct render_opts {
@@ -45,7 +71,13 @@ typedef struct render_opts {
   const char *title;         /* NULL or "": no title line */
   double lo[2], hi[2];       /* the window in world coordinates */
   const char *const *names;  /* names of bodies 0.., or NULL */
-  int nnames;
+  const int *driven;         /* per body: driven (noted in the legend), or NULL */
+  int nnames;                /* entries of names and driven */
+  int autorange;             /* RENDER_ROBUST or RENDER_FULL */
+  int log;                   /* log10 colour scale */
+  int noaxes;                /* no ticks, labels or axis titles */
+  const char *unit;          /* length unit for the axes, or NULL */
+  const char *matrix;        /* the matrix body's name, or NULL: guessed */
   unsigned need;             /* fields without all these pfield flags
                                 count as absent: a snapshot read back
                                 holds only PF_OUTPUT ones */
@@ -58,7 +90,11 @@ typedef struct render_layout {
   int bx0, by0, bx1, by1;    /* colour bar (scalars; zeros for bodies) */
   double sc;                 /* pixels per unit length */
   double vlo, vhi;           /* colour range used */
+  double vmin, vmax;         /* the finite values' true extent */
+  int roundoff;              /* the values are round-off of their field */
   int cmap;                  /* colormap used (scalars) */
+  int matrix;                /* body drawn as the matrix, or -1 */
+  double bar;                /* the scale bar's length in the axes' unit */
 } render_layout;
 
 /* what a key gives */
@@ -79,5 +115,17 @@ int render_draw(canvas *c, render_layout *lay, const particles *ps,
 /* render_draw then png_write; 0 or -1 with err naming the file */
 int render_png(const char *path, const particles *ps, const render_opts *o,
                char *err, size_t errlen);
+/* the same picture as an SVG file */
+int render_svg(const char *path, const particles *ps, const render_opts *o,
+               char *err, size_t errlen);
+/* render_svg when path ends in ".svg" (any case), else render_png */
+int render_file(const char *path, const particles *ps, const render_opts *o,
+                char *err, size_t errlen);
+/* the colour of body b in a picture whose matrix body is matrix */
+uint32_t render_body_color(int b, int matrix);
+/* the length unit of a scene's units string: "m" for "SI", "cm" for
+** "cgs", the string itself if it is a length unit (m, mm, um, cm, km,
+** in, ft), else NULL (e.g. "nondimensional") */
+const char *render_length_unit(const char *units);
 
 #endif

@@ -183,10 +183,31 @@ static const char *csv_preamble(lua_State *L) {
   return lua_tostring(L, -1);
 }
 
+int run_frame(const sim *s, h5frame *fr) {
+  int b, d;
+  memset(fr, 0, sizeof *fr);
+  for (d = 0; d < DIM; d++) {
+    fr->lo[d] = s->g.lo[d];
+    fr->hi[d] = s->g.hi[d];
+    fr->periodic[d] = s->g.periodic[d];
+  }
+  fr->name = calloc(s->nbody ? s->nbody : 1, sizeof *fr->name);
+  fr->driven = calloc(s->nbody ? s->nbody : 1, sizeof *fr->driven);
+  if (!fr->name || !fr->driven) return -1;
+  for (b = 0; b < s->nbody; b++) {
+    snprintf(fr->name[b], sizeof fr->name[b], "%s", s->bodies[b].name);
+    fr->driven[b] = s->bodies[b].driven != 0;
+  }
+  fr->nbody = s->nbody;
+  return 0;
+}
+
 int run_snapshot(lua_State *L, lsim *ls, const char *path) {
   h5meta meta;
   h5prov prov;
+  h5frame fr;
   char err[512];
+  int r;
   memset(&meta, 0, sizeof meta);
   meta.time = ls->s.t;
   meta.step = ls->s.step;
@@ -196,7 +217,14 @@ int run_snapshot(lua_State *L, lsim *ls, const char *path) {
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   meta.source = lua_tostring(L, -1);
   run_provenance(L, &prov);
-  if (out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err)) {
+  meta.frame = &fr;
+  if (run_frame(&ls->s, &fr)) {
+    snprintf(err, sizeof err, "%s: out of memory", path);
+    r = -1;
+  } else
+    r = out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err);
+  out_h5_frame_free(&fr);
+  if (r) {
     lua_pop(L, 4);
     return luaL_error(L, "%s", err);
   }

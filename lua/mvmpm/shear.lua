@@ -275,13 +275,13 @@ function M.monitor(sim, P, bodies)
   local function picture(s, g)
     if s.outdir == "" then return end
     local tag = string.format("%03d", math.floor(g * 100 + 0.5))
-    s:render {file = string.format("%s/sdiff_%s.png", s.outdir, tag), by = "sdiff",
+    s:render {file = "sdiff_" .. tag .. ".png", by = "sdiff",
               range = {0, P.yield}, width = P.width,
               title = string.format("|s1 - s2|, shear strain %.2f", g)}
-    s:render {file = string.format("%s/body_%s.png", s.outdir, tag), by = "body",
+    s:render {file = "body_" .. tag .. ".png", by = "body",
               width = P.width, title = string.format("bodies, shear strain %.2f", g)}
     if bodies.binder and P.bond > 0 then
-      s:render {file = string.format("%s/bond_%s.png", s.outdir, tag), by = "bond",
+      s:render {file = "bond_" .. tag .. ".png", by = "bond",
                 range = {0, P.bond}, width = P.width,
                 title = string.format("bond strength left, shear strain %.2f", g)}
     end
@@ -400,10 +400,10 @@ function M.monitor(sim, P, bodies)
     -- high past the ramp (Figure 7's force chain)
     if s.outdir ~= "" and g > from and force > (mon.peak_force or 0) then
       mon.peak_force = force
-      s:render {file = s.outdir .. "/sdiff_peak.png", by = "sdiff", range = {0, P.yield},
+      s:render {file = "sdiff_peak.png", by = "sdiff", range = {0, P.yield},
                 width = P.width,
                 title = string.format("|s1 - s2| at the largest shear force, strain %.3f", g)}
-      s:render {file = s.outdir .. "/body_peak.png", by = "body", width = P.width,
+      s:render {file = "body_peak.png", by = "body", width = P.width,
                 title = string.format("bodies at the largest shear force, strain %.3f", g)}
     end
     -- stability: every number finite, J > 0, nothing buried

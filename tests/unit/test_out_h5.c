@@ -112,7 +112,7 @@ static char *bigsource(void) {
 
 static void roundtrip(const char *dir) {
   particles a, b;
-  h5meta m = {1.25, 12, 0.01, "nondimensional", "scene.lua", NULL}, r;
+  h5meta m = {.time = 1.25, .step = 12, .cell = 0.01, .units = "nondimensional", .scene = "scene.lua", .source = NULL}, r;
   char path[512], tmp[520], err[512];
   int f;
   particles_init(&a);
@@ -151,7 +151,7 @@ static void roundtrip(const char *dir) {
 
 static void empty(const char *dir) {
   particles a, b;
-  h5meta m = {0, 0, 0.5, "SI", "empty.lua", ""};
+  h5meta m = {.time = 0, .step = 0, .cell = 0.5, .units = "SI", .scene = "empty.lua", .source = ""};
   char path[512], err[512];
   particles_init(&a);
   join(path, sizeof path, dir, "empty.h5");
@@ -167,7 +167,7 @@ static void empty(const char *dir) {
 
 /* a failed write returns -1, says which file, and leaves nothing */
 static void refused(const char *path, const particles *ps, const char *why) {
-  h5meta m = {0, 0, 1, "SI", "s.lua", NULL};
+  h5meta m = {.time = 0, .step = 0, .cell = 1, .units = "SI", .scene = "s.lua", .source = NULL};
   char err[512] = "", tmp[600];
   snprintf(tmp, sizeof tmp, "%s.tmp", path);
   UNIT_CHECK(out_h5_write(path, ps, &m, err, sizeof err) == -1,
@@ -180,7 +180,7 @@ static void refused(const char *path, const particles *ps, const char *why) {
 
 static void failures(const char *dir) {
   particles a, b;
-  h5meta m = {2, 3, 1, "SI", "s.lua", NULL}, r;
+  h5meta m = {.time = 2, .step = 3, .cell = 1, .units = "SI", .scene = "s.lua", .source = NULL}, r;
   char path[512], err[512];
   struct rlimit old, lim;
   void (*oldsig)(int);
@@ -322,7 +322,7 @@ static void damaged(const char *dir) {
     {"wider_int", "neither floating point nor a 32-bit integer", 1, N, 1, 2},
   };
   particles a, b;
-  h5meta m = {0, 0, 1, "SI", "s.lua", NULL}, r;
+  h5meta m = {.time = 0, .step = 0, .cell = 1, .units = "SI", .scene = "s.lua", .source = NULL}, r;
   char path[512], err[512];
   size_t k;
   particles_init(&a);
@@ -362,7 +362,7 @@ static void series(const char *dir) {
   char path[512], tmp[520], err[512];
   int k;
   for (k = 0; k < 3; k++) {
-    h5meta m = {0.1 * k, 10 * k, 0.01, "nondimensional", "s.lua", "-- s\n"};
+    h5meta m = {.time = 0.1 * k, .step = 10 * k, .cell = 0.01, .units = "nondimensional", .scene = "s.lua", .source = "-- s\n"};
     particles_init(&a);
     particles_add_field(&a, "damage", 1, PF_DOUBLE, "1", PF_OUTPUT);
     fill(&a, n[k]);

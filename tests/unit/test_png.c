@@ -540,10 +540,193 @@ static void test_plot(void) {
              "log axis with a range from 0 refused: %s", err);
 }
 
+
+/* the colour range: robust against outliers, the true extent kept; a
+** field that is round-off of its scale draws as zero; log scales */
+static void test_ranges(void) {
+  particles ps;
+  render_opts o = unit_square("mass", 400);
+  render_layout L;
+  canvas c;
+  char err[1024];
+  int i, x, y, n = 200;
+  store(&ps, n, 0.01);
+  for (i = 0; i < n; i++) {
+    ps.x[0][i] = 0.05 + 0.9 * (i % 20) / 19.0;
+    ps.x[1][i] = 0.05 + 0.9 * (i / 20) / 9.0;
+    ps.m[i] = 1 + i;            /* 1 .. 200 */
+  }
+  ps.m[n - 1] = 1e6;            /* one outlier */
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "robust: %s", err);
+  canvas_free(&c);
+  UNIT_CHECK(L.vhi < 250 && L.vmax == 1e6 && L.vmin == 1,
+             "robust range ends at the 99th percentile (%g), min/max kept (%g, %g)",
+             L.vhi, L.vmin, L.vmax);
+  at(&L, &o, ps.x[0][n - 1], ps.x[1][n - 1], &x, &y);
+  o.autorange = RENDER_FULL;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.vhi == 1e6 &&
+             L.vlo == 1, "range = full: min and max (%g, %g)", L.vlo, L.vhi);
+  canvas_free(&c);
+  o.autorange = RENDER_ROBUST;
+  /* a value spread within round-off is a constant: the middle colour */
+  for (i = 0; i < n; i++) ps.m[i] = 0.1414213562373095 * (1 + (i % 3) * 2.2e-16);
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "constant");
+  at(&L, &o, ps.x[0][7], ps.x[1][7], &x, &y);
+  UNIT_CHECK(canvas_get(&c, x, y) == cmap_color(L.cmap, 0.5),
+             "values 1 ulp apart draw in the middle colour, not the ends");
+  canvas_free(&c);
+  /* stress of bodies in free flight: 1e-13 against rho v^2 = 100 */
+  for (i = 0; i < n; i++) {
+    ps.m[i] = 0.01;             /* density 100 */
+    ps.v[0][i] = 1;
+    ps.s[S_XY][i] = (i % 2 ? 1 : -1) * 1e-13;
+    ps.s[S_XX][i] = ps.s[S_YY][i] = ps.s[S_ZZ][i] = 3e-14;
+  }
+  o.by = "stress.xy";
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.roundoff &&
+             L.cmap == CMAP_DIV, "round-off stress is recognised (range %g, %g)", L.vlo, L.vhi);
+  at(&L, &o, ps.x[0][1], ps.x[1][1], &x, &y);
+  UNIT_CHECK(canvas_get(&c, x, y) == cmap_color(CMAP_DIV, 0.5),
+             "1e-13 of stress draws as zero (got %06x)", (unsigned)canvas_get(&c, x, y));
+  canvas_free(&c);
+  o.by = "pressure";
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.roundoff,
+             "round-off pressure too");
+  canvas_free(&c);
+  ps.s[S_XY][0] = 50;           /* a real stress: drawn as it is */
+  o.by = "stress.xy";
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && !L.roundoff,
+             "a stress of 50 is not round-off");
+  canvas_free(&c);
+  /* log: 1, 10, 100 at a third and two thirds apart */
+  o.by = "mass";
+  o.log = 1;
+  for (i = 0; i < n; i++) ps.m[i] = i < 67 ? 1 : i < 134 ? 10 : 100;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.vlo == 1 &&
+             L.vhi == 100, "log range 1..100: %s", err);
+  at(&L, &o, ps.x[0][100], ps.x[1][100], &x, &y);
+  UNIT_CHECK(canvas_get(&c, x, y) == cmap_color(L.cmap, 0.5),
+             "10 sits in the middle of 1..100 on a log scale");
+  canvas_free(&c);
+  ps.m[3] = 0;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) < 0 &&
+             strstr(err, "log scale needs values above zero") && strstr(err, "'mass'"),
+             "log over a zero is refused: %s", err);
+  o.has_range = 1;
+  o.range[0] = 0;
+  o.range[1] = 1;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) < 0 &&
+             strstr(err, "range above zero"), "log with a range from 0: %s", err);
+  o.range[0] = 1;
+  o.range[1] = 100;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0,
+             "log with a positive range draws a zero at the bottom");
+  canvas_free(&c);
+  particles_free(&ps);
+}
+
+/* body colours: a matrix among grains is grey, the grains never are */
+static void test_matrix(void) {
+  particles ps;
+  render_opts o = unit_square("body", 400);
+  render_layout L;
+  canvas c;
+  char err[512];
+  const char *names[4] = {"g1", "g2", "bulk", "g3"};
+  int i, x, y, k, n = 40, grey = 0;
+  for (k = 0; k < 4 * CMAP_NCAT; k++)
+    if (render_body_color(k, -1) == RENDER_MATRIX || render_body_color(k, -1) == CMAP_NAN)
+      grey = 1;
+  UNIT_CHECK(!grey, "no grain colour is the matrix grey or the NaN grey");
+  store(&ps, n, 0.02);
+  for (i = 0; i < n; i++) {
+    ps.x[0][i] = 0.05 + 0.02 * i;
+    ps.x[1][i] = 0.5;
+    ps.body[i] = i < 3 ? 0 : i < 6 ? 1 : i < 9 ? 3 : 2;  /* body 2 the bulk */
+  }
+  o.names = names;
+  o.nnames = 4;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.matrix == 2,
+             "the body with most of the particles is the matrix (%d)", L.matrix);
+  at(&L, &o, ps.x[0][20], 0.5, &x, &y);
+  UNIT_CHECK(canvas_get(&c, x, y) == RENDER_MATRIX, "... drawn grey");
+  at(&L, &o, ps.x[0][1], 0.5, &x, &y);
+  UNIT_CHECK(canvas_get(&c, x, y) == cmap_category(0), "a grain keeps its colour");
+  canvas_free(&c);
+  names[0] = "binder";
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.matrix == 0,
+             "a body named binder is the matrix");
+  canvas_free(&c);
+  o.matrix = "g3";
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.matrix == 3,
+             "the matrix named in the options wins");
+  canvas_free(&c);
+  o.matrix = NULL;
+  names[0] = "g1";
+  for (i = 0; i < n; i++) ps.body[i] = i < 20 ? 0 : 1;  /* two bodies: no matrix */
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 && L.matrix == -1,
+             "two bodies: none is a matrix");
+  canvas_free(&c);
+  particles_free(&ps);
+}
+
+/* axes, units, SVG */
+static void test_axes_svg(void) {
+  particles ps;
+  render_opts o = unit_square("mass", 400);
+  render_layout L;
+  canvas c;
+  char p[512], err[512], *buf;
+  FILE *f;
+  long len;
+  int x, paths = 0;
+  const char *q;
+  UNIT_CHECK(render_length_unit("SI") && strcmp(render_length_unit("SI"), "m") == 0 &&
+             strcmp(render_length_unit("mm"), "mm") == 0 &&
+             render_length_unit("nondimensional") == NULL, "length units of the units");
+  store(&ps, 3, 0.1);
+  ps.x[0][0] = 0.25; ps.x[1][0] = 0.5; ps.m[0] = 1;
+  ps.x[0][1] = 0.5; ps.x[1][1] = 0.5; ps.m[1] = 2;
+  ps.x[0][2] = 0.75; ps.x[1][2] = 0.5; ps.m[2] = 3;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "axes");
+  x = L.dx0 + (int)floor(0.4 * (L.dx1 - L.dx0) + 0.5);
+  UNIT_CHECK(canvas_get(&c, x, L.dy1 + L.scale + 1) == 0,
+             "a tick mark under the domain at x = 0.4");
+  UNIT_CHECK(L.bar == 0.2, "a 1-2-5 scale bar of a fifth of the width (%g)", L.bar);
+  canvas_free(&c);
+  o.noaxes = 1;
+  UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0 &&
+             canvas_get(&c, x, L.dy1 + L.scale + 1) == WHITE, "none without axes");
+  canvas_free(&c);
+  o.noaxes = 0;
+  o.unit = "m";
+  path(p, sizeof p, "r.svg");
+  UNIT_CHECK(render_file(p, &ps, &o, err, sizeof err) == 0, "render_file .svg: %s", err);
+  f = fopen(p, "rb");
+  UNIT_CHECK(f != NULL, "the SVG is there");
+  if (!f) { particles_free(&ps); return; }
+  fseek(f, 0, SEEK_END);
+  len = ftell(f);
+  rewind(f);
+  buf = calloc(len + 1, 1);
+  UNIT_CHECK(fread(buf, 1, len, f) == (size_t)len, "read the SVG");
+  fclose(f);
+  for (q = buf; (q = strstr(q, "<path ")); q++) paths++;
+  UNIT_CHECK(strncmp(buf, "<?xml", 5) == 0 && strstr(buf, "<svg ") &&
+             strstr(buf, "</svg>\n") && paths == 3, "an SVG document, a path a particle (%d)",
+             paths);
+  UNIT_CHECK(strstr(buf, ">x (m)</text>") && strstr(buf, ">y (m)</text>") &&
+             strstr(buf, ">0.2 m</text>") && strstr(buf, ">min 1</text>") &&
+             strstr(buf, ">max 3</text>"), "axis titles, scale bar and extent as text");
+  free(buf);
+  unlink(p);
+  particles_free(&ps);
+}
+
 /* the render command on a snapshot: same picture as the renderer */
 static void test_render_cmd(void) {
   particles ps;
-  h5meta meta = {1.5, 10, 0.1, "nondimensional", "t.lua", NULL};
+  h5meta meta = {.time = 1.5, .step = 10, .cell = 0.1, .units = "nondimensional", .scene = "t.lua", .source = NULL};
   render_opts o = unit_square("body", 400);
   render_layout L;
   canvas c;
@@ -601,6 +784,9 @@ int main(int argc, char **argv) {
   test_axis();
   test_plot();
   test_render_cmd();
+  test_ranges();
+  test_matrix();
+  test_axes_svg();
   if (argc < 2) {
     const char *names[] = {"rgb.png", "rgba.png", "plainfile", "keep.png", "body.png",
                            "mass.png", "plot.png", "snap.h5", "snap.png", NULL};

@@ -49,9 +49,9 @@ local wide = mvmpm.sim {domain = {x = {0, 4}, y = {0, 1}}, cell = 0.25, t_end = 
 wide:body {shape = mvmpm.disk {center = {2, 0.5}, radius = 0.3},
            material = mvmpm.elastic {K = 1, G = 0.5, density = 1}}
 p = tmp("wide.png")
-wide:render {file = p, by = "speed"}
+wide:render {file = p, by = "speed", axes = false}
 w, h = png_size(p)
-V.holds("4 x 1 domain: height under a third of the width", h and h < w / 3, h)
+V.holds("4 x 1 domain without axes: height under a third of the width", h and h < w / 3, h)
 
 V.case "sim:render from a callback between steps"
 local n = 0
@@ -80,6 +80,28 @@ e = err_of(sim.render, sim, {file = "/nonexistent-dir-mvmpm/x.png"})
 V.holds("unwritable file names the path and the reason",
         e:find("/nonexistent%-dir%-mvmpm/x.png") and e:find("No such file"), 0, e)
 V.holds("nothing left under the name", io.open(tmp("x.png")) == nil, 0)
+
+V.case "sim:render options: svg, log, axes, matrix, automatic ranges"
+p = tmp("b.svg")
+sim:render {file = p, by = "speed", range = "full", axes = false}
+local f = io.open(p, "rb")
+local text = f and f:read("a") or ""
+if f then f:close() end
+local npath = select(2, text:gsub("<path ", ""))
+V.holds("an SVG document with one polygon per particle", text:find("^<%?xml") and
+        text:find("</svg>") and npath == #sim:particles("mass"), npath)
+e = err_of(sim.render, sim, {file = tmp("x.png"), by = "velocity.x", log = true})
+V.holds("log over values not all above zero is refused, naming the key",
+        e:find("log scale needs values above zero") and e:find("'velocity.x'"), 0, e)
+e = err_of(sim.render, sim, {file = tmp("x.png"), by = "mass", log = true, range = {0, 1}})
+V.holds("log with a range from zero is refused", e:find("range above zero"), 0, e)
+e = err_of(sim.render, sim, {file = tmp("x.png"), matrix = "nosuch"})
+V.holds("a matrix no body is called", e:find("no body named 'nosuch'"), 0, e)
+e = err_of(sim.render, sim, {file = tmp("x.png"), range = "wide"})
+V.holds("an automatic range other than robust or full", e:find("robust, full"), 0, e)
+p = tmp("log.png")
+sim:render {file = p, by = "mass", log = true, matrix = sim:bodies()[1].name}
+V.holds("log over mass, with a matrix named", png_size(p) == 800, 0)
 
 V.case "mvmpm.plot"
 p = tmp("plot.png")

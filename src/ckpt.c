@@ -202,6 +202,8 @@ static void visit_sim(ckv *v, sim *s) {
   vreal(v, "e.plastic", &e->plastic);
   vreal(v, "e.viscous", &e->viscous);
   vreal(v, "e.thermal", &e->thermal);
+  vreal(v, "e.transfer", &e->transfer);
+  vreal(v, "e.impact", &e->impact);
   vreal(v, "e.initial", &e->initial);
   vvec(v, "e.", "mom", e->mom, DIM);
   vreal(v, "e.angmom", &e->angmom);

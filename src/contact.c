@@ -45,8 +45,9 @@
 
 #define MAXSLOTS 64
 /* a node's record in a threaded pass: the driven body's force (DIM) and
-** work, the friction work, and the bonds cut (a count) */
-#define CREC (DIM + 3)
+** work, the friction work, the bonds cut (a count), and the normal
+** impulses' loss */
+#define CREC (DIM + 4)
 
 /* |a_sl|, and in u the sum of a over the other slots at node n */
 static double parts(const grid *g, double *const a[DIM], int32_t n,
@@ -310,14 +311,17 @@ static double lose(const grid *g, int32_t sl, const double vref[DIM],
   return -w / mr;
 }
 
-/* node k's friction work and bonds cut: recorded (a threaded pass) or
-** added now */
-static void booked(sim *s, size_t k, double fric, int cuts, int rec) {
+/* node k's friction work, bonds cut and normal impulses' loss: recorded
+** (a threaded pass) or added now */
+static void booked(sim *s, size_t k, double fric, int cuts, double imp,
+                   int rec) {
   if (rec) {
     s->crec[CREC * k + DIM + 1] = fric;
     s->crec[CREC * k + DIM + 2] = cuts;
+    s->crec[CREC * k + DIM + 3] = imp;
   } else {
     s->e.friction += fric;
+    s->e.impact += imp;
     s->ncut += (size_t)cuts;
   }
 }
@@ -333,7 +337,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   double cb[MAXSLOTS][DIM], cc[MAXSLOTS][DIM], dpk[MAXSLOTS][DIM];
   double ct[MAXSLOTS][DIM]; /* the tangential part of cc: friction's */
   double sb[DIM] = {0}, sc[DIM] = {0}, st[DIM] = {0}, vref[DIM], M = g->m[n];
-  double fric = 0;
+  double fric = 0, imp = 0, cn[DIM];
   int32_t sl, slots[MAXSLOTS], drv = -1;
   int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
   if (rec) s->cbody[k0] = -1;
@@ -431,10 +435,12 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
         smom[d][sl] += c;
         mom[d][n] += c;
         post[d] = dpk[k][d] + c;
+        cn[d] = cc[k][d] - ct[k][d];
       }
       fric += lose(g, sl, vref, post, ct[k]);
+      imp += lose(g, sl, vref, post, cn);
     }
-    booked(s, k0, fric, cuts, rec);
+    booked(s, k0, fric, cuts, imp, rec);
     return;
   }
   /* momentum-conserving: remove the residual in proportion to mass */
@@ -447,10 +453,12 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       smom[d][sl] += b + c;
       post[d] = dpk[k][d] + b + c;
       ct[k][d] -= f * st[d];
+      cn[d] = c - ct[k][d];
     }
     fric += lose(g, sl, vref, post, ct[k]);
+    imp += lose(g, sl, vref, post, cn);
   }
-  booked(s, k0, fric, cuts, rec);
+  booked(s, k0, fric, cuts, imp, rec);
 }
 
 /* Room for the records of a threaded pass, one per slot and per shared
@@ -494,6 +502,7 @@ static void apply_sums(sim *s) {
     if (g->m[g->shared[k]] <= s->mcut) continue;
     s->e.friction += r[DIM + 1];
     s->ncut += (size_t)r[DIM + 2];
+    s->e.impact += r[DIM + 3];
     if (s->cbody[k] >= 0) {
       double *F = s->bodies[s->cbody[k]].force;
       for (d = 0; d < DIM; d++) F[d] += r[d];

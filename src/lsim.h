@@ -56,6 +56,7 @@ typedef struct lsim {
   long csv_resume;        /* restarted: the table's length then, or -1 */
   char ck_last[1100];     /* the newest checkpoint written */
   int advised;            /* sim_advice was printed (once, at the first run) */
+  int budgeted;           /* sim_budget_advice was printed */
 } lsim;
 
 typedef struct lbody {

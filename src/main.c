@@ -494,6 +494,9 @@ static int cmd_run(int argc, char **argv) {
            s->e.initial, s->e.kinetic, s->e.strain, s->e.friction, s->e.boundary,
            sim_residual(s),
            100 * sim_residual(s) / (s->e.initial > 0 ? s->e.initial : 1));
+    if (s->e.transfer != 0 || s->e.impact != 0)
+      printf("        numerical: transfer %.6g  impact %.6g\n", s->e.transfer,
+             s->e.impact);
     if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0)
       printf("        plastic %.6g  viscous %.6g  thermal work %.6g\n",
              s->e.plastic, s->e.viscous, s->e.thermal);

@@ -48,7 +48,7 @@ int run_mkdirs(const char *path, char *err, size_t errlen) {
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
     "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
-    "debonded", "bonded_area"};
+    "debonded", "bonded_area", "transfer", "impact"};
 #define NCOLS (int)(sizeof cols / sizeof cols[0])
 
 static void csv_row(lua_State *L, lsim *ls) {
@@ -63,6 +63,7 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[12] = s->e.mom[0]; v[13] = s->e.mom[1]; v[14] = s->e.angmom;
   v[15] = s->e.jmin; v[16] = s->e.jmax; v[17] = (double)s->ps.n;
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
+  v[20] = s->e.transfer; v[21] = s->e.impact;
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 
@@ -393,5 +394,17 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     }
   }
   if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 1);
+  if (!ls->budgeted) { /* once per process, as the advice above */
+    static int printed;
+    const char *adv = sim_budget_advice(s);
+    if (adv) {
+      ls->budgeted = 1;
+      if (!printed) {
+        printed = 1;
+        fprintf(stderr, "mvmpm: warning: %s: %s\n",
+                ls->scene[0] ? ls->scene : "sim", adv);
+      }
+    }
+  }
   return 0;
 }

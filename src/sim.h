@@ -71,6 +71,10 @@ typedef struct sim_energy {
   double viscous;    /* viscous dissipation (mat_viscoelastic.c) */
   double thermal;    /* work of the thermal strain on the stress (thermal.c):
                      ** what heating or cooling adds to the strain energy */
+  double transfer;   /* kinetic energy the transfer itself took from the
+                     ** particles, against FLIP's increment (g2p.c) */
+  double impact;     /* what the normal impulses of contact and walls
+                     ** dissipate: impacts are inelastic at a node */
   double initial;    /* kinetic + strain before the first step */
   double mom[DIM];
   double angmom;     /* about the origin (2-D: z component) */
@@ -200,7 +204,8 @@ double sim_next_dt(sim *s);
 ** is exact for a linear oscillator) */
 double sim_total(const sim *s);
 /* energy budget residual: initial + boundary + thermal - friction -
-** plastic - viscous - total; zero up to the error of the step */
+** plastic - viscous - transfer - total; zero up to the error of the
+** step */
 double sim_residual(const sim *s);
 /* recompute kinetic energy, momenta and strain energy from particles */
 void sim_measure(sim *s);
@@ -235,7 +240,12 @@ int sim_wall_hold(const sim *s);
 void g2p(sim *s);              /* g2p.c: velocities; USL: positions, grad v;
                                   MUSL: momenta back to the grid */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */
+double g2p_affine_energy(const sim *s); /* g2p.c: APIC's affine field's
+                                  kinetic energy */
 int constitutive(sim *s);      /* sim.c: each material's update */
 void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */
+/* a warning when the transfer's losses are large against the friction
+** work booked, or NULL (sim.c) */
+const char *sim_budget_advice(const sim *s);
 
 #endif

@@ -37,7 +37,9 @@
 ** large where the motion it stands for is none; the mean velocity has
 ** the force's share halved and cancels it.  Measured in the sheared
 ** cell with unbonded binder (50 cells, linear hats): the old measure
-** left the budget 17 % short.
+** left the budget 17 % short.  The tangential part is friction's; the
+** normal part, booked by the same rule as e.impact, is the loss of an
+** impact the node makes perfectly inelastic: numerical, not friction.
 */
 #include <math.h>
 #include <stdlib.h>

@@ -51,6 +51,9 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
     if (e != d)
       loss -= 0.5 * (p0[e][i] + mom[e][i] + imp[e] - 2 * m * sd->v[e]) * imp[e];
   s->e.friction += loss / m;
+  /* the normal impulse's likewise: an impact's loss at the node */
+  s->e.impact -= 0.5 * (p0[d][i] + mom[d][i] + imp[d] - 2 * m * sd->v[d]) *
+                 imp[d] / m;
   for (e = 0; e < DIM; e++) {
     mom[e][i] += imp[e];
     w += imp[e] * sd->v[e];

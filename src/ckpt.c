@@ -216,6 +216,8 @@ static void visit_sim(ckv *v, sim *s) {
   vreal(v, "e.plastic", &e->plastic);
   vreal(v, "e.viscous", &e->viscous);
   vreal(v, "e.thermal", &e->thermal);
+  vreal_opt(v, "e.transfer", &e->transfer, 0);
+  vreal_opt(v, "e.impact", &e->impact, 0);
   vreal(v, "e.initial", &e->initial);
   /* newer than the format: a checkpoint without them settled nothing,
   ** and its potential's start is taken as where it was then */

@@ -16,9 +16,61 @@
 #include "par.h"
 #include "stencil.h"
 
+/*
+** What the transfer itself dissipates.  FLIP's new velocity v + S dv
+** carries the grid's increment, and with it the work of every force,
+** contact and wall impulse the grid booked; PIC's part of a blend
+** (flip < 1) and APIC's v = S vL replace v by the grid's smooth velocity
+** and drop what the grid cannot see.  The kinetic energy lost, per
+** particle 1/2 m (|v + S dv|^2 - |v_new|^2), is the transfer's own
+** dissipation and is booked as e.transfer.  APIC's particle carries the
+** field v + C r at its nodes (r = x_i - x_p), whose kinetic energy
+** 1/2 m sum_i S_ip |v + C r_i|^2 = 1/2 m (|v|^2 + sum_i S_ip |C r_i|^2)
+** (the weights reproduce linear fields) is what p2g hands the grid: the
+** affine part is counted in the kinetic energy, and the loss is taken
+** against that field moved on by the grid's increment, 1/2 m sum_i S_ip
+** |v + C r_i + dv_i|^2.  XPIC's f holds its
+** correction, not dv: there S dv = S vL - S v, with S v kept by xpic.c
+** in the particle's L.  Under MUSL the gather
+** keeps each particle's loss in L[0] until the remap pass, whose sums
+** run in chunk order, adds it up: the same at any thread count.
+*/
+static int g2p_lossy(const sim *s) {
+  return s->transfer != TRANSFER_FLIP || s->flip < 1;
+}
+
+/* APIC: the affine field's kinetic energy, sum_p 1/2 m_p sum_i S_ip
+** |C_p r_ip|^2, at the particles' present positions (the state before
+** the first step: sim_measure) */
+double g2p_affine_energy(const sim *s) {
+  const particles *ps = &s->ps;
+  const double *c00, *c01, *c10, *c11;
+  double r[DIM][STENCIL_MAX], e = 0;
+  stencil_geo geo;
+  stencil st;
+  size_t i;
+  if (s->transfer != TRANSFER_APIC || s->faff < 0) return 0;
+  c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
+  c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
+  stencil_geo_init(&geo, &s->g);
+  for (i = 0; i < ps->n; i++) {
+    double x[DIM] = {ps->x[0][i], ps->x[1][i]}, a = 0;
+    int k;
+    if (c00[i] == 0 && c01[i] == 0 && c10[i] == 0 && c11[i] == 0) continue;
+    stencil_eval_r(&geo, s->shape, x, s->lp, &st, r);
+    for (k = 0; k < st.n; k++) {
+      double ux = c00[i] * r[0][k] + c01[i] * r[1][k];
+      double uy = c10[i] * r[0][k] + c11[i] * r[1][k];
+      a += st.w[k] * (ux * ux + uy * uy);
+    }
+    e += 0.5 * ps->m[i] * a;
+  }
+  return e;
+}
+
 /* the sums of one chunk of particles (par.h), kept in s->red */
 typedef struct sums {
-  double ke, mom[DIM], am, v2max, pe;
+  double ke, mom[DIM], am, v2max, pe, loss;
   size_t out;
 } sums;
 _Static_assert(sizeof(sums) <= SIM_RED_BYTES, "sums fit SIM_RED_BYTES");
@@ -95,7 +147,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
   const int full = mode == G2P_MOVE, nw = shape_width(kind);
   const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
-  const int xp = s->transfer == TRANSFER_XPIC;
+  const int xp = s->transfer == TRANSFER_XPIC, lossy = g2p_lossy(s);
   /* the dense grid only through these: loads need not wait for stores */
   const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
   const double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
@@ -121,7 +173,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     double x[DIM] = {ps->x[0][i], ps->x[1][i]};
     double vx = 0, vy = 0, ax = 0, ay = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
     double b00 = 0, b01 = 0, b10 = 0, b11 = 0;
-    double nvx, nvy;
+    double nvx, nvy, aref = 0, aff = 0;
     const body *b = &bd[ps->body[i]];
     int32_t slot[STENCIL_MAX];
     int k;
@@ -141,6 +193,11 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       }
       vx += w * qx; vy += w * qy;
       ax += w * fx; ay += w * fy;
+      if (apic && lossy) { /* the old affine field moved on by dv */
+        double ux = ps->v[0][i] + c00[i] * r[0][k] + c01[i] * r[1][k] + fx;
+        double uy = ps->v[1][i] + c10[i] * r[0][k] + c11[i] * r[1][k] + fy;
+        aref += w * (ux * ux + uy * uy - fx * fx - fy * fy);
+      }
       if (full || (apic && kind != SHAPE_BSPLINE2)) {
         double dx = st.dw[0][k], dy = st.dw[1][k];
         l00 += qx * dx; l01 += qx * dy;
@@ -160,6 +217,12 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       }
       if (b->driven) b00 = b01 = b10 = b11 = 0;
       c00[i] = b00; c01[i] = b01; c10[i] = b10; c11[i] = b11;
+      for (k = 0; k < st.n; k++) { /* the new affine field's energy */
+        double ux = b00 * r[0][k] + b01 * r[1][k];
+        double uy = b10 * r[0][k] + b11 * r[1][k];
+        aff += st.w[k] * (ux * ux + uy * uy);
+      }
+      aff *= 0.5 * ps->m[i];
     }
     if (b->driven) {
       nvx = b->vdrive[0];
@@ -173,6 +236,24 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     } else {
       nvx = flip * (ps->v[0][i] + ax) + pic * vx;
       nvy = flip * (ps->v[1][i] + ay) + pic * vy;
+    }
+    if (lossy) { /* the transfer's loss against FLIP's v + S dv */
+      double loss = 0;
+      if (b->driven) {
+      } else if (apic) { /* against the affine field moved on by dv */
+        loss = 0.5 * ps->m[i] * (aref + ax * ax + ay * ay - nvx * nvx -
+                                 nvy * nvy) - aff;
+      } else {
+        /* XPIC: S dv = S vL - S v, S v kept by xpic.c in L */
+        double fx = ps->v[0][i] + (xp ? vx - ps->L[0][i] : ax);
+        double fy = ps->v[1][i] + (xp ? vy - ps->L[1][i] : ay);
+        loss = 0.5 * ps->m[i] * (fx * fx + fy * fy - nvx * nvx - nvy * nvy);
+      }
+      if (full) { u->loss += loss; u->ke += aff; }
+      else { /* kept for remap_kind, which sums them */
+        ps->L[0][i] = loss;
+        ps->L[1][i] = aff;
+      }
     }
     ps->v[0][i] = nvx;
     ps->v[1][i] = nvy;
@@ -324,6 +405,7 @@ static void finish(sim *s) {
     u.am += red[c].am;
     u.pe += red[c].pe;
     u.out += red[c].out;
+    u.loss += red[c].loss;
     if (red[c].v2max > u.v2max) u.v2max = red[c].v2max;
   }
   s->e.kinetic = u.ke;
@@ -332,6 +414,7 @@ static void finish(sim *s) {
   s->e.angmom = u.am;
   s->vmax = sqrt(u.v2max);
   s->nout = u.out;
+  s->e.transfer += u.loss;
 }
 
 typedef struct g2p_job { sim *s; int mode; } g2p_job;
@@ -394,6 +477,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double dt = s->dt, lp = s->lp;
+  const int lossy = g2p_lossy(s), apic = s->transfer == TRANSFER_APIC;
   const double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
   const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
   stencil_geo geo;
@@ -422,6 +506,10 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
       vx += w * qx; vy += w * qy;
       l00 += ux * dx; l01 += ux * dy;
       l10 += uy * dx; l11 += uy * dy;
+    }
+    if (lossy) { /* g2p_kind's, before L is set */
+      u->loss += ps->L[0][i];
+      if (apic) u->ke += ps->L[1][i];
     }
     ps->L[0][i] = l00; ps->L[1][i] = l01;
     ps->L[2][i] = l10; ps->L[3][i] = l11;

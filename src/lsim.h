@@ -65,6 +65,7 @@ typedef struct lsim {
   int warned;
   double e_peak;          /* the largest kinetic + strain seen */
   char failed[1100];      /* the state written when a guard stopped the run */
+  int budgeted;           /* sim_budget_advice was printed */
 } lsim;
 
 typedef struct lbody {

@@ -662,7 +662,7 @@ static int lenergy(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   if (!s->started) sim_begin(s);
-  lua_createtable(L, 0, 14);
+  lua_createtable(L, 0, 24);
   setnum(L, "kinetic", s->e.kinetic);
   setnum(L, "strain", s->e.strain);
   setnum(L, "potential", s->e.potential);
@@ -672,6 +672,9 @@ static int lenergy(lua_State *L) {
   setnum(L, "boundary_work", s->e.boundary);
   setnum(L, "thermal_work", s->e.thermal);
   setnum(L, "settled", s->e.settled);
+  setnum(L, "transfer", s->e.transfer);
+  setnum(L, "impact", s->e.impact);
+  setnum(L, "numerical", s->e.transfer + s->e.impact);
   setnum(L, "initial", s->e.initial);
   setnum(L, "scale", sim_scale(s));
   setnum(L, "total", sim_total(s));

@@ -115,7 +115,7 @@ static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
     "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
     "debonded", "bonded_area", "potential", "lag", "settled", "initial",
-    "scale"};
+    "scale", "transfer", "impact"};
 #define NCOLS (int)(sizeof cols / sizeof cols[0])
 
 static void csv_row(lua_State *L, lsim *ls) {
@@ -132,6 +132,7 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
   v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;
   v[23] = s->e.initial; v[24] = sim_scale(s);
+  v[25] = s->e.transfer; v[26] = s->e.impact;
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 
@@ -654,6 +655,18 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
       lua_call(L, 1, 0);
     }
     lua_pop(L, 1);
+  }
+  if (!ls->budgeted) { /* once per process, as the advice above */
+    static int printed;
+    const char *adv = sim_budget_advice(s);
+    if (adv) {
+      ls->budgeted = 1;
+      if (!printed) {
+        printed = 1;
+        fprintf(stderr, "mvmpm: warning: %s: %s\n",
+                ls->scene[0] ? ls->scene : "sim", adv);
+      }
+    }
   }
   return 0;
 }

@@ -247,6 +247,23 @@ const char *sim_advice(const sim *s) {
   return NULL;
 }
 
+/* what the numerics took (the transfer's smoothing and the nodes'
+** inelastic impacts) beside what friction took: a scene whose friction
+** work is read as physics should know when the numerical part is of the
+** same size (measured in grain packs: tests/verify/friction_budget.lua,
+** studies/grain_budget.lua) */
+const char *sim_budget_advice(const sim *s) {
+  const sim_energy *e = &s->e;
+  double num = e->transfer + e->impact, put = e->initial + e->boundary;
+  if (!(e->friction > 0) || !(put > 0) || num < 0.02 * put ||
+      num < 0.5 * e->friction)
+    return NULL;
+  return "the numerical losses (sim:energy().transfer + impact) are more "
+         "than half the friction work: friction work differs between "
+         "transfer schemes and resolutions by as much (docs/verification.md, "
+         "energy budget with friction)";
+}
+
 double sim_law(const sim *s, int32_t a, int32_t b) {
   const pairlaw *l = sim_law_of(s, a, b);
   return l ? l->mu : s->mu_default;
@@ -322,7 +339,7 @@ void sim_measure(sim *s) {
     if (mi >= 0) se += s->mats[mi].model->energy(&s->mats[mi], ps, i);
     am += ps->m[i] * (ps->x[0][i] * ps->v[1][i] - ps->x[1][i] * ps->v[0][i]);
   }
-  s->e.kinetic = ke;
+  s->e.kinetic = ke + g2p_affine_energy(s);
   s->e.strain = se;
   s->e.potential = pe;
   s->e.angmom = am;
@@ -354,7 +371,7 @@ double sim_total(const sim *s) {
 double sim_residual(const sim *s) {
   const sim_energy *e = &s->e;
   return e->initial + e->boundary + e->thermal - e->friction - e->plastic -
-         e->viscous - e->settled - sim_total(s);
+         e->viscous - e->settled - e->transfer - e->impact - sim_total(s);
 }
 
 double sim_scale(const sim *s) {

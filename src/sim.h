@@ -80,6 +80,10 @@ typedef struct sim_energy {
   double thermal;    /* work of the thermal strain on the stress (thermal.c):
                      ** what heating or cooling adds to the strain energy */
   double settled;    /* kinetic energy taken out by sim_stop (settling) */
+  double transfer;   /* kinetic energy the transfer itself took from the
+                     ** particles, against FLIP's increment (g2p.c) */
+  double impact;     /* what the normal impulses of contact and walls
+                     ** dissipate: impacts are inelastic at a node */
   double initial;    /* kinetic + strain + potential before the first step */
   double potential0; /* potential before the first step */
   double mom[DIM];
@@ -215,7 +219,8 @@ double sim_next_dt(sim *s);
 ** is exact for a linear oscillator) */
 double sim_total(const sim *s);
 /* energy budget residual: initial + boundary + thermal - friction -
-** plastic - viscous - total; zero up to the error of the step */
+** plastic - viscous - transfer - total; zero up to the error of the
+** step */
 double sim_residual(const sim *s);
 /* the budget's scale, which no choice of origin changes (the potential's
 ** own value does): the kinetic and strain energy at the start plus the
@@ -264,8 +269,13 @@ int sim_wall_hold(const sim *s);
 void g2p(sim *s);              /* g2p.c: velocities; USL: positions, grad v;
                                   MUSL: momenta back to the grid */
 void g2p_remap(sim *s);        /* g2p.c: MUSL grad v from remap */
+double g2p_affine_energy(const sim *s); /* g2p.c: APIC's affine field's
+                                  kinetic energy */
 int constitutive(sim *s, double dt); /* sim.c: each material's update
                                   over dt */
 void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */
+/* a warning when the transfer's losses are large against the friction
+** work booked, or NULL (sim.c) */
+const char *sim_budget_advice(const sim *s);
 
 #endif

@@ -31,10 +31,14 @@
 #include "stencil.h"
 
 /* acc += A-numerator of u: each particle reads u at its nodes (its
-** field's slot at shared nodes) and adds m_p S_ip (S u)_p to acc */
-STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared) {
+** field's slot at shared nodes) and adds m_p S_ip (S u)_p to acc.
+** keep: the first pass, u = v; (S v)_p is kept in the particle's L[0],
+** L[1] for g2p, which measures the transfer's loss against FLIP's
+** v_p + S (vL - v) (g2p.c; the remap sets L afterwards) */
+STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared,
+                               const int keep) {
   grid *g = &s->g;
-  const particles *ps = &s->ps;
+  particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double lp = s->lp;
   stencil_geo geo;
@@ -59,6 +63,8 @@ STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared) {
         for (d = 0; d < DIM; d++) u[d] += w * g->f[d][n];
       }
     }
+    if (keep)
+      for (d = 0; d < DIM; d++) ps->L[d][i] = u[d];
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       const double wm = st.w[k] * mp;
@@ -69,10 +75,11 @@ STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared) {
   }
 }
 
-static void apply(sim *s) {
+static void apply(sim *s, int keep) {
   int shared = s->g.nshared > 0;
 #define APPLY(K)                                                         \
-  if (shared) apply_kind(s, K, 1); else apply_kind(s, K, 0);
+  if (shared) { if (keep) apply_kind(s, K, 1, 1); else apply_kind(s, K, 1, 0); } \
+  else { if (keep) apply_kind(s, K, 0, 1); else apply_kind(s, K, 0, 0); }
   switch (s->shape) {
   case SHAPE_GIMP: APPLY(SHAPE_GIMP) break;
   case SHAPE_BSPLINE2: APPLY(SHAPE_BSPLINE2) break;
@@ -114,11 +121,11 @@ static void nodes_part(void *arg, int t, int nparts) {
 void xpic(sim *s) {
   xjob j = {s, 0};
   par_run(s->par, nodes_part, &j); /* u = v */
-  apply(s);
+  apply(s, 1);
   j.stage = 1;                     /* u1 = v - A v */
   par_run(s->par, nodes_part, &j);
   if (s->xpic >= 3) {              /* c = 2 u1 - A u1 */
-    apply(s);
+    apply(s, 0);
     j.stage = 2;
     par_run(s->par, nodes_part, &j);
   }

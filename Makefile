@@ -90,8 +90,8 @@ $(BUILD)/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)
 # the build's identity (src/version.c): git describe of this tree, else
 # the release number, and the compiler and flags.  The header is
 # rewritten only when its text changes, so only version.o is rebuilt
-$(BUILD)/version.o: $(BUILD)/version_gen.h
-$(BUILD)/version.o: CFLAGS += -I$(BUILD)
+$(BUILD)/version.o $(BUILD)/pic/version.o: $(BUILD)/version_gen.h
+$(BUILD)/version.o $(BUILD)/pic/version.o: CFLAGS += -I$(BUILD)
 $(BUILD)/version_gen.h: FORCE | $(BUILD)
 	@v=$$(git describe --always --dirty 2>/dev/null) || v=; \
 	cc=$$($(CC) --version 2>/dev/null | head -1); \

@@ -10,7 +10,9 @@
 ** whose length is the area of r's surface the node stands for (by the
 ** divergence theorem, the integral of S_i over r's surface); contact.c
 ** compares the traction the bond carries with the smaller strength of
-** the two sides.  A node that owns none of r's particles (a sliver of the
+** the two sides.  The slot also sums its particles' in-plane stresses
+** weighted by w_p = V_p S_ip, and the weights: contact.c projects the
+** mixture of the fields' stresses at a node on the normal.  A node that owns none of r's particles (a sliver of the
 ** body reaching it) takes the weighted mean of those that reach it.
 **
 ** Where contact cut a node's strength (the traction exceeded it), the
@@ -97,6 +99,12 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
       if (g->head[n] < 0 || (blk >= 0 && !mine[k / nw])) continue;
       sl = grid_slot(g, n, f);
       g->sb[sl] += st.w[k] * mp * bp[i];
+      g->ssw[sl] += V * st.w[k];
+#if DIM == 2
+      g->sst[0][sl] += V * st.w[k] * ps->s[S_XX][i];
+      g->sst[1][sl] += V * st.w[k] * ps->s[S_XY][i];
+      g->sst[2][sl] += V * st.w[k] * ps->s[S_YY][i];
+#endif
       if (!byvol)
         for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
     }

@@ -60,7 +60,8 @@ static void slots_free(grid *g) {
   int d;
   free(g->snext); free(g->sfield); free(g->snode); free(g->sm);
   free(g->sext); free(g->sb); free(g->scut); free(g->sbonded);
-  free(g->sbo); free(g->smo);
+  free(g->sbo); free(g->smo); free(g->ssw);
+  for (d = 0; d < DIM * (DIM + 1) / 2; d++) free(g->sst[d]);
   for (d = 0; d < DIM; d++) free(g->sv[d]);
   free(g->sw);
   for (d = 0; d < DIM; d++) free(g->sx[d]);
@@ -129,6 +130,8 @@ static int slots_grow(grid *g) {
   GROW(g->sb, double, cap); GROW(g->scut, double, cap);
   GROW(g->sbonded, unsigned char, cap);
   GROW(g->sbo, double, cap); GROW(g->smo, double, cap);
+  GROW(g->ssw, double, cap);
+  for (d = 0; d < DIM * (DIM + 1) / 2; d++) GROW(g->sst[d], double, cap);
   for (d = 0; d < DIM; d++) GROW(g->sv[d], double, cap);
   for (d = 0; d < DIM; d++) {
     GROW(g->sp[d], double, cap); GROW(g->sf[d], double, cap);
@@ -174,6 +177,8 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
   memset(g->sbonded + s0, 0, s1 - s0);
   memset(g->sbo + s0, 0, n);
   memset(g->smo + s0, 0, n);
+  memset(g->ssw + s0, 0, n);
+  for (d = 0; d < DIM * (DIM + 1) / 2; d++) memset(g->sst[d] + s0, 0, n);
   for (d = 0; d < DIM; d++) {
     memset(g->sv[d] + s0, 0, n);
     memset(g->sp[d] + s0, 0, n);

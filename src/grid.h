@@ -46,6 +46,10 @@ typedef struct grid {
   double *sbo, *smo;   /* strength x mass, and mass, of the particles whose
                           nearest node this is (bond.c) */
   unsigned char *sbonded; /* bonded this step: moves with the node */
+  /* sum_p w_p sigma_p (in-plane, upper triangle as sxx) and sum_p w_p,
+  ** w_p = V_p S_ip, over the field's particles (bond.c): the stress the
+  ** bond test projects on the normal */
+  double *sst[DIM * (DIM + 1) / 2], *ssw;
   /* the particles' moments about the node, for normals = "plane"
   ** (contact.c), kept only while moments is set: sum_p w_p, sum_p w_p r_p
   ** and sum_p w_p r_p r_p^T (upper triangle, row by row), w_p = V_p S_ip,

@@ -22,7 +22,8 @@ local function profile(sim, dT)
   return lame.profile(sim, {0.5, 0.5}, unit * alpha * math.abs(dT), a, b, h)
 end
 
-local sim = mvmpm.load("scenarios/concentric_debond.lua", {strength = sb, t_end = 30})
+-- the shape set here: the numbers below depend on it
+local sim = mvmpm.load("scenarios/concentric_debond.lua", {strength = sb, t_end = 30, shape = "linear"})
 local first, gone
 sim:every {steps = 1, fn = function(s)
   local e = s:energy()
@@ -39,12 +40,39 @@ for _, t in ipairs {8, 12} do
   V.info(string.format("t = %g: the same in the cells at the interface and the rim", t), wi)
 end
 
-V.case "debonding onset"
+V.case "debonding onset at three resolutions (linear hats, then uGIMP)"
 sim:run(20)
 local dTc = sb / (unit * alpha)
 V.info("analytic onset |dT| = strength / (s per unit |alpha dT|)", dTc)
-V.info("measured onset |dT|", rate * first)
-V.near("onset |dT| / analytic", rate * first / dTc, 1, 0.15)
+-- the onset |dT| over the analytic one, on a fresh scene run to its first cut
+local function onset(cells, shape)
+  local sm = mvmpm.load("scenarios/concentric_debond.lua",
+    {strength = sb, t_end = 30, cells = cells, shape = shape})
+  local t0
+  sm:every {steps = 1, fn = function(x)
+    if not t0 and x:energy().debonded > 0 then t0 = x.t end
+  end}
+  while not t0 and sm.t < 1.5 * dTc / rate do sm:run(sm.t + 0.5) end
+  return t0 and rate * t0 / dTc or 0 / 0
+end
+local res = {{25, onset(25, "linear")}, {35, onset(35, "linear")}, {50, rate * first / dTc}}
+local err = {}
+for i, r in ipairs(res) do
+  err[i] = math.abs(r[2] - 1)
+  V.info(string.format("%d cells: onset / analytic", r[1]), r[2])
+  -- an exactly uniform Lame disc must not let go before its strength:
+  -- the old force-over-area rule cut at 0.914, 0.896, 0.892 (25, 50, 100)
+  V.above(string.format("%d cells: onset / analytic (no early cut)", r[1]), r[2], 0.97)
+  V.below(string.format("%d cells: |onset / analytic - 1|", r[1]), err[i], 0.08)
+end
+-- The target is 3 % at every resolution with a clear order; measured
+-- 6.5 %, 5.9 %, 0.8 % (and 3.6 % early at 100 cells, studies/concentric.lua):
+-- not met at 25 and 35 cells, and no steady order (docs/verification.md).
+V.info("observed order, 25 -> 35 cells", math.log(err[1] / err[2]) / math.log(35 / 25))
+V.info("observed order, 35 -> 50 cells", math.log(err[2] / err[3]) / math.log(50 / 35))
+V.info("onset within 3 % at all three (1 yes, 0 no)",
+  (err[1] <= 0.03 and err[2] <= 0.03 and err[3] <= 0.03) and 1 or 0)
+V.info("uGIMP, 25 cells: onset / analytic", onset(25, "gimp"))
 -- The load is uniform along the interface (the exact solution lets go
 -- everywhere at once): what spreads the release over time is only the
 -- traction's residual scatter, so the "front" here is no crack tip.  The

@@ -57,4 +57,42 @@ function M.run(o)
           wmin = wmin, wmax = wmax}
 end
 
+-- The accuracy-cost study case of both inclines (studies/roll.lua: the
+-- wall, per contact patch; studies/roll_slab.lua: a driven slab, through
+-- body-body contact): rolling at 25 deg (mu 0.5) and sliding at 30 deg
+-- (mu 0.1), errors |a / a_ref - 1| and |alpha / alpha_ref - 1| against
+-- the rigid disc.  o: name, title, grid, slab (nil: the wall)
+function M.study(o)
+  local g, R = M.g, M.R
+  local function incline(s, clock, deg, mu)
+    local r = M.run {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer,
+                     flip = s.flip, update = s.update, cfl = s.cfl, deg = deg, mu = mu,
+                     wall_contact = "patch", slab = o.slab, run = clock.run}
+    return r.a, r.alpha, r.hop, r.th
+  end
+  return {
+    name = o.name, title = o.title, length = "D",
+    reference = "rigid disc: rolling a = 2/3 g sin, alpha = a/R; sliding a = g (sin - mu cos), R alpha = 2 mu g cos",
+    metrics = {{key = "roll_a", label = "rolling |a/a_ref - 1|"},
+               {key = "roll_alpha", label = "rolling |alpha/alpha_ref - 1|"},
+               {key = "slide_a", label = "sliding |a/a_ref - 1|"},
+               {key = "slide_alpha", label = "sliding |alpha/alpha_ref - 1|"}},
+    extra = {"roll_a_ratio", "roll_alpha_ratio", "slide_a_ratio", "slide_alpha_ratio", "roll_hop"},
+    grid = o.grid,
+    baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl", ppc = 2},
+    skip = function(s) return s.transfer == "apic" and s.shape == "linear" end,
+    run = function(s, clock)
+      local ra, ral, hop, th = incline(s, clock, 25, 0.5)
+      local a_r = 2 / 3 * g * math.sin(th)
+      local sa, sal, _, ts = incline(s, clock, 30, 0.1)
+      local a_s = g * (math.sin(ts) - 0.1 * math.cos(ts))
+      local al_s = 2 * 0.1 * g * math.cos(ts) / R
+      return {roll_a = math.abs(ra / a_r - 1), roll_alpha = math.abs(ral / (a_r / R) - 1),
+              slide_a = math.abs(sa / a_s - 1), slide_alpha = math.abs(sal / al_s - 1),
+              roll_a_ratio = ra / a_r, roll_alpha_ratio = ral / (a_r / R),
+              slide_a_ratio = sa / a_s, slide_alpha_ratio = sal / al_s, roll_hop = hop}
+    end,
+  }
+end
+
 return M

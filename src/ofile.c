@@ -3,6 +3,7 @@
 */
 #include <errno.h>
 #include <fcntl.h>
+#include <string.h>
 #include <unistd.h>
 #include "ofile.h"
 
@@ -36,4 +37,35 @@ FILE *ofile_fcreate(const char *path, const char *mode) {
     errno = e;
   }
   return f;
+}
+
+int ofile_put(const char *path, const void *buf, size_t len, char *err,
+              size_t errlen) {
+  char tmp[4096];
+  FILE *f;
+  int ok;
+  if ((size_t)snprintf(tmp, sizeof tmp, "%s.tmp", path) >= sizeof tmp) {
+    snprintf(err, errlen, "%s: path too long", path);
+    return -1;
+  }
+  f = ofile_fcreate(tmp, "wb"); /* never through a link when strict */
+  if (!f) {
+    snprintf(err, errlen, "%s: cannot create the file (%s)", path,
+             strerror(errno));
+    return -1;
+  }
+  ok = fwrite(buf, 1, len, f) == len;
+  ok = fflush(f) == 0 && ok;
+  if (!ok) snprintf(err, errlen, "%s: cannot write (%s)", path, strerror(errno));
+  if (fclose(f) != 0 && ok) {
+    snprintf(err, errlen, "%s: cannot write (%s)", path, strerror(errno));
+    ok = 0;
+  }
+  if (ok && rename(tmp, path) != 0) {
+    snprintf(err, errlen, "%s: cannot rename the finished file into place (%s)",
+             path, strerror(errno));
+    ok = 0;
+  }
+  if (!ok) unlink(tmp);
+  return ok ? 0 : -1;
 }

@@ -23,4 +23,10 @@ int ofile_create(const char *path);
 /* the same as a stdio stream (mode "w" or "wb"), or NULL with errno */
 FILE *ofile_fcreate(const char *path, const char *mode);
 
+/* len bytes to path, whole or not at all: written to path.tmp (made by
+** ofile_create), flushed and renamed into place; the temp file removed
+** on a failure.  0, or -1 with a message naming path in err */
+int ofile_put(const char *path, const void *buf, size_t len, char *err,
+              size_t errlen);
+
 #endif

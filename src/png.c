@@ -87,39 +87,14 @@ int png_write(const char *path, const unsigned char *px, int w, int h,
               int channels, char *err, size_t errlen) {
   unsigned char *buf;
   size_t len;
-  char tmp[4096];
-  FILE *f;
-  int ok;
-  if ((size_t)snprintf(tmp, sizeof tmp, "%s.tmp", path) >= sizeof tmp) {
-    snprintf(err, errlen, "%s: path too long", path);
-    return -1;
-  }
+  int r;
   if (png_encode(px, w, h, channels, &buf, &len, err, errlen)) {
     char why[256];
     snprintf(why, sizeof why, "%s", err);
     snprintf(err, errlen, "%s: %s", path, why);
     return -1;
   }
-  f = ofile_fcreate(tmp, "wb"); /* never through a link */
-  if (!f) {
-    snprintf(err, errlen, "%s: cannot create the file (%s)", path,
-             strerror(errno));
-    free(buf);
-    return -1;
-  }
-  ok = fwrite(buf, 1, len, f) == len;
-  ok = fflush(f) == 0 && ok;
-  if (!ok) snprintf(err, errlen, "%s: cannot write (%s)", path, strerror(errno));
-  if (fclose(f) != 0 && ok) {
-    snprintf(err, errlen, "%s: cannot write (%s)", path, strerror(errno));
-    ok = 0;
-  }
+  r = ofile_put(path, buf, len, err, errlen);
   free(buf);
-  if (ok && rename(tmp, path) != 0) {
-    snprintf(err, errlen, "%s: cannot rename the finished file into place (%s)",
-             path, strerror(errno));
-    ok = 0;
-  }
-  if (!ok) unlink(tmp);
-  return ok ? 0 : -1;
+  return r;
 }

@@ -203,11 +203,13 @@ int run_frame(const sim *s, h5frame *fr) {
   return 0;
 }
 
-int run_snapshot(lua_State *L, lsim *ls, const char *path) {
+/* the particles as they stand to path, with the meta data, provenance
+** and frame every snapshot carries; 0, or -1 with err */
+static int write_snapshot(lua_State *L, lsim *ls, const char *path, char *err,
+                          size_t errlen) {
   h5meta meta;
   h5prov prov;
   h5frame fr;
-  char err[512];
   int r;
   memset(&meta, 0, sizeof meta);
   meta.time = ls->s.t;
@@ -220,16 +222,19 @@ int run_snapshot(lua_State *L, lsim *ls, const char *path) {
   run_provenance(L, &prov);
   meta.frame = &fr;
   if (run_frame(&ls->s, &fr)) {
-    snprintf(err, sizeof err, "%s: out of memory", path);
+    snprintf(err, errlen, "%s: out of memory", path);
     r = -1;
   } else
-    r = out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err);
+    r = out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, errlen);
   out_h5_frame_free(&fr);
-  if (r) {
-    lua_pop(L, 4);
-    return luaL_error(L, "%s", err);
-  }
   lua_pop(L, 4);
+  return r;
+}
+
+int run_snapshot(lua_State *L, lsim *ls, const char *path) {
+  char err[512];
+  if (write_snapshot(L, ls, path, err, sizeof err))
+    return luaL_error(L, "%s", err);
   return 0;
 }
 
@@ -541,26 +546,12 @@ static void residual_check(lsim *ls, double from) {
 ** failed step left, part-way through an update.
 */
 static void failed_state(lua_State *L, lsim *ls) {
-  h5meta meta;
-  h5prov prov;
   char path[1100], err[512];
-  int r;
   ls->failed[0] = '\0';
   if (!ls->csv_open || !ls->outdir[0]) return;
   snprintf(path, sizeof path, "%s/failed_%06ld.h5", ls->outdir, ls->s.step);
   sandbox_file(L, path, "output");
-  memset(&meta, 0, sizeof meta);
-  meta.time = ls->s.t;
-  meta.step = ls->s.step;
-  meta.cell = ls->s.g.h;
-  meta.units = ls->units;
-  meta.scene = ls->scene;
-  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
-  meta.source = lua_tostring(L, -1);
-  run_provenance(L, &prov);
-  r = out_h5_write_prov(path, &ls->s.ps, &meta, &prov, err, sizeof err);
-  lua_pop(L, 4);
-  if (r == 0)
+  if (write_snapshot(L, ls, path, err, sizeof err) == 0)
     snprintf(ls->failed, sizeof ls->failed, "; the state it stopped in is "
              "%s", path);
   else

@@ -132,37 +132,11 @@ void svg_text(svg *g, double x, double y, const char *s, int scale,
 }
 
 int svg_write(svg *g, const char *path, char *err, size_t errlen) {
-  char tmp[4096];
-  FILE *f;
-  int ok;
   svg_noclip(g);
   add(g, "</svg>\n");
   if (g->failed) {
     snprintf(err, errlen, "%s: out of memory for the picture", path);
     return -1;
   }
-  if ((size_t)snprintf(tmp, sizeof tmp, "%s.tmp", path) >= sizeof tmp) {
-    snprintf(err, errlen, "%s: path too long", path);
-    return -1;
-  }
-  f = ofile_fcreate(tmp, "wb"); /* never through a link */
-  if (!f) {
-    snprintf(err, errlen, "%s: cannot create the file (%s)", path,
-             strerror(errno));
-    return -1;
-  }
-  ok = fwrite(g->b, 1, g->n, f) == g->n;
-  ok = fflush(f) == 0 && ok;
-  if (!ok) snprintf(err, errlen, "%s: cannot write (%s)", path, strerror(errno));
-  if (fclose(f) != 0 && ok) {
-    snprintf(err, errlen, "%s: cannot write (%s)", path, strerror(errno));
-    ok = 0;
-  }
-  if (ok && rename(tmp, path) != 0) {
-    snprintf(err, errlen, "%s: cannot rename the finished file into place (%s)",
-             path, strerror(errno));
-    ok = 0;
-  }
-  if (!ok) unlink(tmp);
-  return ok ? 0 : -1;
+  return ofile_put(path, g->b, g->n, err, errlen);
 }

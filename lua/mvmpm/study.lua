@@ -3,7 +3,8 @@
 -- subset), measures the case's error against its reference and the wall
 -- time of each run (the median of R repeats), and writes
 --
---   DIR/NAME.csv      one row per setting: settings, errors, seconds,
+--   DIR/NAME.csv      one row per setting: settings, errors, seconds
+--                     (wall; `cpu`: the process's CPU seconds beside them),
 --                     particles, steps, simulated time, seconds per unit
 --                     simulated time per 1,000 particles, status
 --   DIR/NAME.md       the fitted convergence orders, the Pareto front, the
@@ -178,13 +179,14 @@ end
 
 -- the clock a case advances its simulation with: only stepping is timed
 local function new_clock(r)
-  local c = {seconds = 0, sim = nil, rep = r}
+  local c = {seconds = 0, cpu = 0, sim = nil, rep = r}
   -- a failing step still counts its time, then raises the error again
   local function timed(f, sim, a)
     c.sim = sim
-    local t0 = mvmpm.clock()
+    local t0, c0 = mvmpm.clock(), os.clock()
     local ok, r = pcall(f, sim, a)
     c.seconds = c.seconds + (mvmpm.clock() - t0)
+    c.cpu = c.cpu + (os.clock() - c0)
     if not ok then error(r, 0) end
     return r
   end
@@ -197,19 +199,19 @@ end
 local function measure(case, s, R)
   local row = {}
   for k, v in pairs(s) do row[k] = v end
-  local times = {}
+  local times, cpus = {}, {}
   for r = 1, R do
     local clock = new_clock(r)
     local ok, res = pcall(case.run, s, clock)
     if not ok then
       row.status = "failed: " .. tostring(res):gsub("^.-:%d+: ", ""):gsub("%s+", " ")
-      row.seconds = clock.seconds
+      row.seconds, row.cpu = clock.seconds, clock.cpu
       if clock.sim then
         row.particles, row.steps, row.t = clock.sim.n, clock.sim.steps, clock.sim.t
       end
       return row
     end
-    times[#times + 1] = clock.seconds
+    times[#times + 1], cpus[#cpus + 1] = clock.seconds, clock.cpu
     if r == 1 then
       for k, v in pairs(res) do row[k] = v end
       local sim = clock.sim
@@ -217,7 +219,7 @@ local function measure(case, s, R)
     end
   end
   row.status = "ok"
-  row.seconds = median(times)
+  row.seconds, row.cpu = median(times), median(cpus)
   row.seconds_min, row.seconds_max = math.min(table.unpack(times)), math.max(table.unpack(times))
   row.repeats = #times
   -- seconds per unit simulated time per 1,000 particles, and per
@@ -275,8 +277,8 @@ function S.run(case, opts)
       rows[#rows + 1] = row
       local msg = {}
       for _, m in ipairs(metrics) do msg[#msg + 1] = string.format("%s %.4g", m.key, row[m.key] or 0 / 0) end
-      print(string.format("  %-28s cells %-4d %-40s %8.3f s  n %6s  %s", row.scheme, s.cells,
-        table.concat(msg, "  "), row.seconds or 0, tostring(row.particles),
+      print(string.format("  %-28s cells %-4d %-40s %8.3f s (CPU %.3f s)  n %6s  %s", row.scheme,
+        s.cells, table.concat(msg, "  "), row.seconds or 0, row.cpu or 0, tostring(row.particles),
         row.status == "ok" and "" or row.status))
       io.stdout:flush()
     end
@@ -293,7 +295,7 @@ local function columns(case)
   local cols = {"scheme", "cells", "ppc", "shape", "transfer", "flip", "update", "cfl"}
   for _, m in ipairs(case.metrics) do cols[#cols + 1] = m.key end
   for _, c in ipairs(case.extra or {}) do cols[#cols + 1] = c end
-  for _, c in ipairs {"seconds", "seconds_min", "seconds_max", "repeats", "particles", "steps", "t",
+  for _, c in ipairs {"seconds", "cpu", "seconds_min", "seconds_max", "repeats", "particles", "steps", "t",
                       "cost", "us_per_particle_step", "status"} do cols[#cols + 1] = c end
   return cols
 end
@@ -430,11 +432,11 @@ function S.summary(case, rows, o)
     -- Pareto
     local front = S.pareto(rows, k)
     w("\n### %s: Pareto front (no setting is both faster and more accurate)\n", esc(m.label))
-    w("| scheme | cells | %s | seconds | particles | s per unit time per 1000 particles |", esc(m.label))
-    w("|---|---|---|---|---|---|")
+    w("| scheme | cells | %s | seconds (wall) | CPU seconds | particles | s per unit time per 1000 particles |", esc(m.label))
+    w("|---|---|---|---|---|---|---|")
     for _, r in ipairs(front) do
-      w("| %s | %d | %.3g | %.3g | %d | %.3g |", r.scheme, r.cells, math.abs(r[k]), r.seconds,
-        r.particles, r.cost)
+      w("| %s | %d | %.3g | %.3g | %s | %d | %.3g |", r.scheme, r.cells, math.abs(r[k]), r.seconds,
+        r.cpu and string.format("%.3g", r.cpu) or "-", r.particles, r.cost)
     end
     local ser = {}
     for _, sc in ipairs(schemes) do

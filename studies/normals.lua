@@ -41,8 +41,8 @@ for _, c in ipairs {{30, 0}, {30, 0.2}, {45, 0}, {45, 0.2}} do
   end
 end
 
-print("-- two discs: |dE|/E0 (total) head on; glancing: 1 - kept, |Jt/Jn|, final spin [cpu s]")
-for _, shape in ipairs {"linear", "gimp"} do
+print("-- two discs: |dE|/E0 (total) head on; glancing: 1 - kept, |orbit kept - 1|, |Jt/Jn|, final spin [cpu s]")
+for _, shape in ipairs {"linear", "gimp", "bspline2"} do
   for _, m in ipairs {"mass", "maxvolume/4", "plane/4"} do
     for _, gap in ipairs {"touch", "step"} do
       local h, g = {}, {}
@@ -50,8 +50,8 @@ for _, shape in ipairs {"linear", "gimp"} do
         local r0 = C.discs {cells = c, method = m, shape = shape, gap = gap}
         local r1 = C.discs {cells = c, method = m, shape = shape, gap = gap, offset = 0.2}
         h[i] = string.format("%d: %.4f", c, math.abs(r0.total - 1))
-        g[i] = string.format("%d: %.4f %.4f %.3f [%.1f]", c, math.abs(r1.kept - 1),
-                             math.abs(r1.jt), r1.spin_end, r0.cpu + r1.cpu)
+        g[i] = string.format("%d: %.4f %.4f %.4f %.3f [%.1f]", c, math.abs(r1.kept - 1),
+                             math.abs(r1.orbit - 1), math.abs(r1.jt), r1.spin_end, r0.cpu + r1.cpu)
       end
       print(string.format("   %-6s %-12s %-5s head-on %s", shape, m, gap, table.concat(h, "  ")))
       print(string.format("   %-6s %-12s %-5s glancing %s", shape, m, gap, table.concat(g, "  ")))

@@ -93,7 +93,17 @@ end
 -- energy (kinetic + strain, after over before), total (sim:energy().total
 -- after over before), jt (the impulse on the upper disc across the
 -- instantaneous line of centres, summed over the steps, over the impulse
--- along it), cpu, a, b (the discs' diag at the end)}
+-- along it), orbit (the relative motion's angular momentum, after over
+-- before), cpu, a, b (the discs' diag at the end)}
+-- Why orbit: frictionless contact pushes along the contact's normal, which
+-- for two equal discs is the line of centres at every instant, so the
+-- relative motion is a central-force problem: its angular momentum
+-- mu r x v_rel is kept exactly, however long and soft the contact and
+-- however much energy stays in vibration.  Measured at touching distance
+-- (|r| = 2R) on the way in and on the way out, that is the tangential
+-- relative velocity across the line of centres, kept.  "kept" instead
+-- takes both velocities across one fixed line (the closest approach's),
+-- exact only for a short, elastic impact.
 function M.discs(o)
   local off = (o.offset or 0) / math.sqrt(2)
   local meth, win = M.opts(o.method)
@@ -107,6 +117,10 @@ function M.discs(o)
     shape = mvmpm.disk {center = {0.8 + off, 0.8 - off}, radius = 0.2}}
   local e0 = sim:energy()
   local a0, b0 = a:diag(), b:diag()
+  -- the total momentum is zero, so this is the relative motion's
+  local function orbit(p, q)
+    return p.mass * (p.x * p.vy - p.y * p.vx) + q.mass * (q.x * q.vy - q.y * q.vx)
+  end
   local dmin, nx, ny, spin, jn, jt, pv = math.huge, 0, 0, 0, 0, 0, {b0.vx, b0.vy}
   sim:every {steps = 1, fn = function()
     local da, db = a:diag(), b:diag()
@@ -127,6 +141,7 @@ function M.discs(o)
           spin_end = math.max(math.abs(a1.omega), math.abs(b1.omega)),
           energy = (e1.kinetic + e1.strain) / (e0.kinetic + e0.strain),
           total = e1.total / e0.total, jt = jn ~= 0 and jt / jn or 0, cpu = cpu,
+          orbit = off ~= 0 and orbit(a1, b1) / orbit(a0, b0) or 1,
           a = a1, b = b1}
 end
 

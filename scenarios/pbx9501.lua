@@ -54,6 +54,11 @@ local P = mvmpm.params {
   t_end = 0,           -- > 0: stop here instead of at `strain`
   record = 20,         -- steps between rows of pbx_history.csv
   images = 0.1,        -- strain between pictures (0: none)
+  shape = "linear",    -- or "gimp", "bspline2"
+  update = "musl",     -- or "usl", "usavg"
+  normals = "mass",    -- contact normals: "volume", "maxvolume", "plane"
+  normal_window = 0,   -- ... from the shared nodes within this many cells
+  contact_gap = "touch", -- or "step": contact judged at the step's end
 }
 
 local function check(ok, what)
@@ -108,6 +113,8 @@ local sim = mvmpm.sim {
     right = {"wall", friction = "stick", velocity = function(t) return 0, speed(t) end},
   },
   contact = {friction = P.friction, bond = false},
+  shape = P.shape, update = P.update, normals = P.normals, normal_window = P.normal_window,
+  contact_gap = P.contact_gap,
 }
 
 local hmx = M.hmx {name = "HMX"}

@@ -72,6 +72,10 @@ function M.params(extra)
     flip = 1.0,
     update = "musl",     -- or "usl"
     shape = "linear",    -- or "gimp", "bspline2"
+    normals = "mass",    -- contact normals: "volume", "maxvolume", "plane"
+    normal_window = 0,   -- ... from the shared nodes within this many cells
+    contact_gap = "touch", -- or "step": contact judged at the step's end
+    wall_contact = "node", -- or "patch": the sides act per contact patch
   }
   for k, v in pairs(extra or {}) do p[k] = v end
   return p
@@ -115,7 +119,8 @@ function M.build(P)
   local sim = mvmpm.sim {
     domain = {x = {0, L}, y = {0, L}}, cell = L / P.cells, ppc = P.ppc,
     t_end = M.time_of(P, P.strain), cfl = P.cfl, flip = P.flip,
-    update = P.update, shape = P.shape,
+    update = P.update, shape = P.shape, normals = P.normals, normal_window = P.normal_window,
+    contact_gap = P.contact_gap, wall_contact = P.wall_contact,
     sides = {left = side(-1), right = side(1), bottom = "periodic", top = "periodic"},
     contact = {friction = P.friction},
   }

@@ -22,7 +22,8 @@ local P = mvmpm.params {
   transfer = "default", -- or "flip", "apic" (gimp or bspline2), "xpic"
   xpic = 2,            -- XPIC's order (2 or 3)
   separation = true,   -- contact only once surfaces meet
-  wall_contact = "node", -- or "patch": the wall acts per contact patch
+  wall_contact = "node", -- or "patch": the wall acts per contact patch;
+                         -- "couple": ... with friction at the wall line
   contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
 }
 

@@ -22,7 +22,9 @@ local P = mvmpm.params {
   transfer = "default", -- or "flip", "apic" (gimp or bspline2), "xpic"
   xpic = 2,            -- XPIC's order (2 or 3)
   separation = true,   -- contact only once surfaces meet
-  wall_contact = "node", -- or "patch": the wall acts per contact patch
+  wall_contact = "node", -- or "patch": the wall acts per contact patch;
+                         -- "couple": ... with friction at the wall line
+  contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
 }
 
 local h = 1 / P.cells
@@ -41,6 +43,7 @@ local sim = mvmpm.sim {
   sides = {"wall", friction = P.friction},
   contact = {separation = P.separation},
   wall_contact = P.wall_contact,
+  contact_gap = opt(P.contact_gap),
 }
 
 local disc = mvmpm.elastic {K = 1, G = 0.5, density = 1, name = "disc"}

@@ -215,7 +215,7 @@ int lsim_new(lua_State *L) {
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   static const char *const gapopt[] = {"touch", "step", NULL};
-  static const char *const wallopt[] = {"node", "patch", NULL};
+  static const char *const wallopt[] = {"node", "patch", "couple", NULL};
   static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
                                              "plane", NULL};
   const char *what = "sim";
@@ -319,10 +319,12 @@ int lsim_new(lua_State *L) {
       for (k = 0; k < NSIDES; k++) {
         double *ext = ls->s.sides[k].ext;
         unsigned char *acted = ls->s.sides[k].acted;
+        double *hm = ls->s.sides[k].hm;
         size_t next = ls->s.sides[k].next;
         ls->s.sides[k] = keep[k];
         ls->s.sides[k].ext = ext;
         ls->s.sides[k].acted = acted;
+        ls->s.sides[k].hm = hm;
         ls->s.sides[k].next = next;
       }
     }

@@ -31,23 +31,27 @@ static inline int shape_linear(double xi, double *w, double *dw) {
 
 /*
 ** uGIMP: the hat convolved with a particle of half width lp (cells,
-** lp <= 1/2), the particle domain kept at its initial size.  r is the
-** particle's offset from the node.
+** lp <= 1/2), the particle domain kept at its initial size.  The
+** particle lies within half a cell of the stencil's middle node, at
+** offset f in [-1/2, 1/2).  Where it overlaps that node (|f| < lp) the
+** outer weights are the overlaps (lp -+ f)^2 / 4lp; beyond, one outer
+** node takes the hat's linear part and the other nothing.  With f
+** clamped to [-lp, lp] (c) and the rest (e = f - c) both cases are one
+** expression, without branches on where the particle is (they were
+** mispredicted at every cell crossing); the middle weight is what the
+** outer two leave (the weights sum to one).
 */
-static inline void shape_gimp1(double r, double lp, double *w, double *dw) {
-  double a = fabs(r), s = r < 0 ? -1.0 : 1.0;
-  if (a < lp) { *w = 1.0 - (r * r + lp * lp) / (2 * lp); *dw = -r / lp; }
-  else if (a <= 1.0 - lp) { *w = 1.0 - a; *dw = -s; }
-  else if (a < 1.0 + lp) {
-    double t = 1.0 + lp - a;
-    *w = t * t / (4 * lp); *dw = -s * t / (2 * lp);
-  } else { *w = 0.0; *dw = 0.0; }
-}
-
 static inline int shape_gimp(double xi, double lp, double *w, double *dw) {
-  int i0 = (int)floor(xi + 0.5) - 1, k;
-  for (k = 0; k < 3; k++) shape_gimp1(xi - (i0 + k), lp, &w[k], &dw[k]);
-  return i0;
+  double b = floor(xi + 0.5), f = xi - b;
+  double c = f < -lp ? -lp : f > lp ? lp : f, e = f - c;
+  double q = 0.25 / lp, lo = lp - c, hi = lp + c;
+  w[0] = q * lo * lo - (e < 0 ? e : 0.0);
+  w[2] = q * hi * hi + (e > 0 ? e : 0.0);
+  w[1] = 1.0 - w[0] - w[2];
+  dw[0] = -2 * q * lo;
+  dw[2] = 2 * q * hi;
+  dw[1] = -c / lp;
+  return (int)b - 1;
 }
 
 /* quadratic B-spline: C1 weights, no gradient jump when crossing cells */

@@ -46,7 +46,8 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
     s->sides[k].ext = malloc(s->sides[k].next * sizeof(double));
     /* the wall line and the ghost lines beyond it */
     s->sides[k].acted = calloc((size_t)(s->g.pad + 1) * s->sides[k].next, 1);
-    if (!s->sides[k].ext || !s->sides[k].acted) return -1;
+    s->sides[k].hm = calloc((size_t)(s->g.pad + 2) * s->sides[k].next, sizeof(double));
+    if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm) return -1;
   }
   return 0;
 }
@@ -58,6 +59,7 @@ void sim_free(sim *s) {
   for (k = 0; k < NSIDES; k++) {
     free(s->sides[k].ext);
     free(s->sides[k].acted);
+    free(s->sides[k].hm);
   }
   free(s->mats);
   free(s->bodies);

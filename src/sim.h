@@ -29,7 +29,9 @@ enum update_kind { UPDATE_USL, UPDATE_MUSL, UPDATE_USAVG };
 ** gravity on */
 enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* how a wall acts on the nodes where material touches it (boundary.c) */
-enum wall_rule { WALL_NODE, WALL_PATCH };
+/* ... WALL_COUPLE: the patch rule with sliding friction put at the wall
+** line by a couple on the first node line inside (boundary.c) */
+enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
@@ -51,6 +53,9 @@ typedef struct side {
   size_t next;
   unsigned char *acted; /* per node of the wall line and the ghost lines:
                         ** the wall acted there this step */
+  double *hm;        /* patch rule with friction: per node of those lines
+                     ** and the first line inside, sum S m (distance of the
+                     ** particle from the wall line) (boundary.c) */
   double force[DIM]; /* force the wall put on the material, last step */
 } side;
 

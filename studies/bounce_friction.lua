@@ -1,5 +1,6 @@
 -- Study: the frictional bouncing cylinder (mu = 0.1), first impact, the
--- walls acting per contact patch (wall_contact = "patch").
+-- walls acting per contact patch (wall_contact = "patch"; WALL_CONTACT=couple
+-- in the environment: friction at the wall line, "couple").
 -- Reference: a rigid disc hitting a wall with restitution e (the one the
 -- run measures: the elastic disc keeps some energy as vibration) takes a
 -- Coulomb impulse mu (1 + e) m v_n while it slides (it slides throughout
@@ -14,9 +15,10 @@ local mvmpm = require "mvmpm"
 local S = require "mvmpm.study"
 
 local mu, R, v0 = 0.1, 0.5, 0.1
+local rule = os.getenv("WALL_CONTACT") or "patch"
 
 local case = {
-  name = "bounce_friction",
+  name = rule == "patch" and "bounce_friction" or "bounce_friction_" .. rule,
   title = "frictional bounce, spin after impact 1",
   length = "D",
   reference = "rigid-disc impulse model given the measured restitution: omega = 2 mu (1 + e) v_n / R",
@@ -29,7 +31,7 @@ local case = {
   run = function(s, clock)
     local sim = mvmpm.load("scenarios/cylinder_bounce.lua",
       {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer, flip = s.flip,
-       update = s.update, cfl = s.cfl, friction = mu, t_end = 16, wall_contact = "patch"})
+       update = s.update, cfl = s.cfl, friction = mu, t_end = 16, wall_contact = rule})
     local disc = sim:bodies()[1]
     local e0 = sim:energy().total
     local sum, n, vx = 0, 0, nil

@@ -1,6 +1,7 @@
 -- Study: a disc on an incline, the incline being the floor wall of a box
 -- with gravity rotated by theta (g = 1), periodic along the incline, the
--- wall acting per contact patch (wall_contact = "patch").  An
+-- wall acting per contact patch (wall_contact = "patch"; WALL_CONTACT=couple
+-- in the environment: friction at the wall line).  An
 -- elastic disc (K = 100, G = 50, density 1, R = 0.5: sqrt(g R) / c_L =
 -- 0.05) starts at rest touching the floor.  Two regimes:
 --
@@ -18,8 +19,10 @@
 local S = require "mvmpm.study"
 local I = require "mvmpm.incline"
 
+local rule = os.getenv("WALL_CONTACT") or "patch"
 return S.main(I.study {
-  name = "roll",
+  name = rule == "patch" and "roll" or "roll_" .. rule,
+  wall_contact = rule,
   title = "disc on an incline: rolling (25 deg, mu 0.5) and sliding (30 deg, mu 0.1)",
   grid = {cells = {8, 16, 32}, shape = {"linear", "gimp", "bspline2"},
            transfer = {"flip", "apic"}, ppc = {2, 4}},

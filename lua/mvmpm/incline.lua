@@ -61,13 +61,14 @@ end
 -- wall, per contact patch; studies/roll_slab.lua: a driven slab, through
 -- body-body contact): rolling at 25 deg (mu 0.5) and sliding at 30 deg
 -- (mu 0.1), errors |a / a_ref - 1| and |alpha / alpha_ref - 1| against
--- the rigid disc.  o: name, title, grid, slab (nil: the wall)
+-- the rigid disc.  o: name, title, grid, slab (nil: the wall),
+-- wall_contact ("patch" unless given)
 function M.study(o)
   local g, R = M.g, M.R
   local function incline(s, clock, deg, mu)
     local r = M.run {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer,
                      flip = s.flip, update = s.update, cfl = s.cfl, deg = deg, mu = mu,
-                     wall_contact = "patch", slab = o.slab, run = clock.run}
+                     wall_contact = o.wall_contact or "patch", slab = o.slab, run = clock.run}
     return r.a, r.alpha, r.hop, r.th
   end
   return {

@@ -138,10 +138,10 @@ V.near("energy budget residual / E0 (16 cells)", g[4].e.residual / ge0, 0, 0.05)
 -- takes some of it back).  Targets: spins after impacts 1 and 2 within
 -- 10 % of the model at 8 cells, 5 % at 16.  Measured at 8, 12 and 16
 -- cells in one run each (flights t = 8..16 and 20..28).
-local function patched(cells, shape)
+local function patched(cells, shape, rule)
   local sim = mvmpm.load("scenarios/cylinder_bounce.lua",
                          {friction = 0.1, t_end = 28, cells = cells, shape = shape,
-                          wall_contact = "patch"})
+                          wall_contact = rule or "patch"})
   local disc = sim:bodies()[1]
   local e0 = sim:energy().total
   local s1, s2, d10, d20 = 0, 0, nil, nil
@@ -193,4 +193,34 @@ for _, shape in ipairs {"linear", "gimp"} do
     V.below("patch rule closer to the model than the node rule, impact 1, 16 cells", err1[3],
             math.abs(1 - q1))
   end
+end
+
+-- wall_contact = "couple": the patch rule with sliding friction put at the
+-- wall line (a couple on the first node line inside, docs/algorithm.md
+-- §9).  On the patch alone friction acts at the mass centre of the
+-- material the wall line's nodes move, about 0.4 cell above the contact
+-- with linear hats, so its torque falls short by that arm (above: 0.85 /
+-- 0.82 at 8 cells).  Targets: 10 % at 8 cells, 5 % at 16 (asserted).
+for _, shape in ipairs {"linear", "gimp"} do
+  V.case("frictional bounce (mu = 0.1), friction at the wall line (couple), " .. shape)
+  local err1, err2 = {}, {}
+  for k, c in ipairs {8, 12, 16} do
+    local q1c, q2c, res, diss = patched(c, shape, "couple")
+    err1[k], err2[k] = math.abs(1 - q1c), math.abs(1 - q2c)
+    V.info(string.format("spin after impact 1 / rigid model, %d cells", c), q1c)
+    V.info(string.format("spin after impact 2 / rigid model, %d cells", c), q2c)
+    if c ~= 12 then
+      local tol = c == 8 and 0.10 or 0.05
+      V.near(string.format("spin after impact 1 / rigid model, %d cells", c), q1c, 1, tol)
+      V.near(string.format("spin after impact 2 / rigid model, %d cells", c), q2c, 1, tol)
+    end
+    if c >= 12 then
+      V.near(string.format("energy budget residual / E0, %d cells", c), res, 0, 0.05)
+    else
+      V.info(string.format("energy budget residual / E0, %d cells", c), res)
+    end
+    V.above(string.format("friction work dissipated (> 0), %d cells", c), diss, 0)
+  end
+  V.info("impact 1 error, observed order (8 -> 16)", math.log(err1[1] / err1[3], 2))
+  V.info("impact 2 error, observed order (8 -> 16)", math.log(err2[1] / err2[3], 2))
 end

@@ -103,7 +103,8 @@ static long vfind(ckv *v, vlist *l, const char *name) {
 /* the numbers that may be infinite: a stop never due, sticking
 ** friction, a bond without a cap, a time never reached */
 static int may_be_inf(const char *name) {
-  static const char *const end[] = {"t_stop", "mu_default", "bond_default",
+  static const char *const end[] = {"t_stop", "t_ignition", "mu_default",
+                                    "bond_default",
                                     ".mu", ".bond", "_next", ".next", NULL};
   size_t n = strlen(name), k;
   int j;
@@ -222,6 +223,8 @@ static void visit_sim(ckv *v, sim *s) {
   /* newer than the format: a checkpoint without them settled nothing,
   ** and its potential's start is taken as where it was then */
   vreal_opt(v, "e.settled", &e->settled, 0);
+  vreal_opt(v, "e.chemical", &e->chemical, 0);
+  vreal_opt(v, "t_ignition", &s->t_ignition, INFINITY);
   vreal_opt(v, "e.potential0", &e->potential0, e->potential);
   vvec(v, "e.", "mom", e->mom, DIM);
   vreal(v, "e.angmom", &e->angmom);

@@ -14,6 +14,7 @@
 #include "interrupt.h"
 #include "lcheck.h"
 #include "lsim.h"
+#include "react.h"
 #include "thermal.h"
 
 /* a body whose simulation is open: its arrays are the body's memory */
@@ -471,6 +472,9 @@ int lbody_new(lua_State *L) {
   /* initial temperature: the body's, else the scene's (thermal.h) */
   if (!isnan(T0) && thermal_enable(s)) luaL_error(L, "body: out of memory");
   thermal_seed(s, first, s->ps.n, isnan(T0) ? NULL : &T0);
+  /* a reacting material: every particle starts unburnt (zero-filled) */
+  if (mi >= 0 && s->mats[mi].rx.Z > 0 && react_enable(s))
+    luaL_error(L, "body: out of memory");
   (void)isrest;
   return lbody_push(L, 1, b);
 }

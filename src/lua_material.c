@@ -50,10 +50,50 @@ static const char *name_of(lua_State *L, const char *what) {
   return name;
 }
 
-/* alpha and T_ref, common to every model */
+/* the gas constant in J/(mol K) (CODATA 2018, exact) for Ea without R */
+#define GAS_R 8.314462618
+
+/* reaction = {Z =, Ta = | Ea = [, R = 8.314462618], Q =, order = 1,
+** fk = T0}: the kinetics of react.h; name, source and note are kept for
+** the reader of a parameter set and not used */
+static void reaction_keys(lua_State *L, const char *what, material *m) {
+  static const char *const keys[] = {"Z", "Ta", "Ea", "R", "Q", "order", "fk",
+                                     "name", "source", "note", NULL};
+  char rw[48];
+  int hasTa, hasEa, t = lua_getfield(L, 1, "reaction");
+  if (t == LUA_TNIL) { lua_pop(L, 1); return; }
+  snprintf(rw, sizeof rw, "%s.reaction", what);
+  if (t != LUA_TTABLE)
+    luaL_error(L, "%s: must be a table {Z =, Ta = (or Ea =), Q =, order = } "
+                  "(got %s)", rw, luaL_typename(L, -1));
+  chk_keys(L, -1, rw, keys);
+  m->rx.Z = chk_num(L, -1, rw, "Z", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  lua_getfield(L, -1, "Ta"); hasTa = !lua_isnil(L, -1); lua_pop(L, 1);
+  lua_getfield(L, -1, "Ea"); hasEa = !lua_isnil(L, -1); lua_pop(L, 1);
+  if (hasTa == hasEa)
+    luaL_error(L, "%s: give the activation temperature Ta = E/R (K), or the "
+                  "activation energy Ea with R (default %g J/(mol K)), not "
+                  "both", rw, GAS_R);
+  if (hasTa)
+    m->rx.Ta = chk_num(L, -1, rw, "Ta", 0, 0, HUGE_VAL, CHK_OPENLO);
+  else
+    m->rx.Ta = chk_num(L, -1, rw, "Ea", 0, 0, HUGE_VAL, CHK_OPENLO) /
+               chk_num(L, -1, rw, "R", GAS_R, 0, HUGE_VAL, CHK_OPENLO);
+  m->rx.Q = chk_num(L, -1, rw, "Q", 0, 0, HUGE_VAL, CHK_REQUIRED);
+  m->rx.n = chk_num(L, -1, rw, "order", 1, 0, 3, 0);
+  m->rx.T_fk = chk_num(L, -1, rw, "fk", 0, 0, HUGE_VAL, CHK_OPENLO);
+  if (!(m->cp > 0))
+    luaL_error(L, "%s: a reacting material needs its specific heat c > 0 "
+                  "(the heat of reaction Q raises T by Q / c)", what);
+  lua_pop(L, 1);
+}
+
+/* alpha, T_ref, c and the reaction, common to every model */
 static void thermal_keys(lua_State *L, const char *what, material *m) {
   m->alpha = chk_num(L, 1, what, "alpha", 0, -HUGE_VAL, HUGE_VAL, 0);
   m->T_ref = chk_num(L, 1, what, "T_ref", 0, -HUGE_VAL, HUGE_VAL, 0);
+  m->cp = chk_num(L, 1, what, "c", 0, 0, HUGE_VAL, 0);
+  reaction_keys(L, what, m);
 }
 
 static material *newmat(lua_State *L) {
@@ -64,7 +104,7 @@ static material *newmat(lua_State *L) {
 
 static int elastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
-                                     "alpha", "T_ref", NULL};
+                                     "alpha", "T_ref", "c", "reaction", NULL};
   const char *what = "elastic";
   material tmp, *m;
   double K, G, rho;
@@ -85,7 +125,7 @@ static int elastic(lua_State *L) {
 static int plastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
                                      "yield", "hardening", "alpha", "T_ref",
-                                     NULL};
+                                     "c", "reaction", NULL};
   const char *what = "plastic";
   material tmp, *m;
   double K, G, rho, y, H;
@@ -136,7 +176,7 @@ static int prony(lua_State *L, const char *what, double *G, double *tau) {
 
 static int viscoelastic(lua_State *L) {
   static const char *const keys[] = {"K", "G_inf", "prony", "density", "name",
-                                     "alpha", "T_ref", NULL};
+                                     "alpha", "T_ref", "c", "reaction", NULL};
   const char *what = "viscoelastic";
   material tmp, *m;
   double K, Ginf, rho, G[MAT_MAXPRONY], tau[MAT_MAXPRONY];

@@ -22,6 +22,16 @@
 
 typedef struct material material;
 
+/* single-step Arrhenius kinetics (react.h); Z = 0: the material does not
+** react */
+typedef struct react_law {
+  double Z;      /* pre-exponential factor, 1/T */
+  double Ta;     /* activation temperature E / R, K */
+  double Q;      /* heat of reaction per unit mass (> 0 exothermic) */
+  double n;      /* order in (1 - lambda), 0 .. 3 */
+  double T_fk;   /* > 0: Frank-Kamenetskii's exponent about this T */
+} react_law;
+
 #define MAT_MAXPRONY 8             /* Maxwell elements of one material */
 #define MAT_MAXFIELDS (MAT_MAXPRONY + 2)
 
@@ -59,6 +69,10 @@ struct material {
   ** material and the temperature at which the seeded shape is stress
   ** free; alpha = 0 keeps the material out of the thermal phase */
   double alpha, T_ref;
+  /* specific heat capacity per unit mass (heat per mass and kelvin) */
+  double cp;
+  /* reaction (react.c) */
+  react_law rx;
   /* elastic-plastic (mat_plastic.c): initial yield stress (von Mises,
   ** equivalent stress) and linear isotropic hardening modulus */
   double yield, hardening;

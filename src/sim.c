@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "prof.h"
+#include "react.h"
 #include "shape.h"
 #include "sim.h"
 #include "thermal.h"
@@ -32,6 +33,10 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->ppc = ppc;
   s->lp = 0.5 / ppc;
   s->ftemp = -1;
+  s->freact = -1;
+  s->react_tol = REACT_TOL;
+  s->react_ign = 0.5;
+  s->t_ignition = INFINITY;
   s->threads = 1;
   particles_init(&s->ps);
   if (grid_init(&s->g, lo, hi, h, periodic, shape_pad(shape)) ||
@@ -569,6 +574,8 @@ int sim_step(sim *s) {
   }
   if (s->temp_on) thermal(s);
   if (constitutive(s, usavg ? 0.5 * s->dt : s->dt)) return -1;
+  /* after every other source of heat of the step */
+  if (s->react_on) react(s);
   prof_mark(s->prof, PROF_CONST);
   s->t += s->dt;
   s->step++;

@@ -80,6 +80,9 @@ typedef struct sim_energy {
   double thermal;    /* work of the thermal strain on the stress (thermal.c):
                      ** what heating or cooling adds to the strain energy */
   double settled;    /* kinetic energy taken out by sim_stop (settling) */
+  double chemical;   /* heat the reaction released, sum m Q d lambda
+                     ** (react.c): an input to the heat, not to the
+                     ** mechanical budget */
   double transfer;   /* kinetic energy the transfer itself took from the
                      ** particles, against FLIP's increment (g2p.c) */
   double impact;     /* what the normal impulses of contact and walls
@@ -142,6 +145,12 @@ typedef struct sim {
   int ftemp;         /* particle field "temperature", -1 if no scene uses it */
   int temp_on;       /* a uniform temperature is imposed (thermal.c) */
   double temp;       /* ... its value at the end of the next step */
+  int freact;        /* particle field "reacted", -1 if nothing reacts */
+  int react_on;      /* some material reacts: the reaction phase runs */
+  double react_tol;  /* largest change of Ta / T over a substep (react.h) */
+  double react_ign;  /* the reacted fraction that counts as ignition */
+  double t_ignition; /* when a particle first passed it; INFINITY before */
+  int react_nsub;    /* most substeps one particle took, last step */
   double vmax;       /* fastest particle of the last step */
   size_t nout;       /* particles outside the domain after the last move */
   double mcut_rel;   /* mcut as a fraction of the lightest particle */
@@ -274,6 +283,7 @@ double g2p_affine_energy(const sim *s); /* g2p.c: APIC's affine field's
 int constitutive(sim *s, double dt); /* sim.c: each material's update
                                   over dt */
 void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */
+void react(sim *s);            /* react.c: reaction and its heat */
 /* a warning when the transfer's losses are large against the friction
 ** work booked, or NULL (sim.c) */
 const char *sim_budget_advice(const sim *s);

@@ -1,0 +1,157 @@
+-- The reaction phase against solutions that do not use the engine.
+--
+-- (a) Adiabatic induction: a block at rest, no conduction, zero-order
+-- kinetics.  c dT/dt = Q Z exp(-Ta/T), so the time to reach T is
+-- t(T) = c / (Q Z) * integral from T0 to T of exp(Ta/T') dT', computed
+-- here by quadrature; its large-activation limit is Frank-Kamenetskii's
+-- adiabatic explosion time c T0^2 / (Q Z Ta) exp(Ta/T0).  The engine's
+-- temperature history and ignition time (lambda = 1/2) at three
+-- mechanical steps, with the observed order.
+-- (b) First-order decay at constant temperature (Q = 0): lambda(t) =
+-- 1 - exp(-k t) to round-off, whatever the step.
+-- (c) The chemical energy released equals the heat the particles gained.
+local mvmpm = require "mvmpm"
+local V = require "mvmpm.verify"
+
+local T0, Ta, c, Q, Z = 1000.0, 20000.0, 1000.0, 5.0e6, 5.0e6
+
+-- the exact time to reach T (zero order, adiabatic) on a table: the
+-- integral of exp(Ta/T') by the trapezoid rule on 200000 panels
+-- (relative error ~1e-8 here), then inverted panel by panel
+local NT = 200000
+local dT = (Q / c) / NT
+local Ttab, ttab = {}, {}
+do
+  local acc, f0 = 0, math.exp(Ta / T0)
+  Ttab[0], ttab[0] = T0, 0
+  for j = 1, NT do
+    local T = T0 + j * dT
+    local f1 = math.exp(Ta / T)
+    acc = acc + 0.5 * (f0 + f1) * dT
+    Ttab[j], ttab[j], f0 = T, acc * c / (Q * Z), f1
+  end
+end
+local function t_of(T)
+  local j = math.min(NT - 1, math.floor((T - T0) / dT))
+  return ttab[j] + (ttab[j + 1] - ttab[j]) * (T - Ttab[j]) / dT
+end
+local function T_of(t)
+  local lo, hi = 0, NT
+  while hi - lo > 1 do
+    local mid = (lo + hi) // 2
+    if ttab[mid] <= t then lo = mid else hi = mid end
+  end
+  return Ttab[lo] + dT * (t - ttab[lo]) / (ttab[hi] - ttab[lo])
+end
+
+-- a 4 x 4 particle block of reacting material, at rest, no gravity
+local function block(reaction, temp)
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.25, ppc = 2,
+                         shape = "gimp", update = "usavg"}
+  sim:body {shape = mvmpm.rect {lo = {0.25, 0.25}, hi = {0.75, 0.75}},
+            material = mvmpm.elastic {K = 1e3, G = 5e2, density = 1, c = c,
+                                      reaction = reaction},
+            temperature = temp}
+  return sim
+end
+
+local function mean(t) local s = 0 for _, v in ipairs(t) do s = s + v end return s / #t end
+
+V.case "adiabatic induction, zero order: temperature history and ignition time"
+local t_half = t_of(T0 + 0.5 * Q / c)  -- lambda = 1/2
+local t_fk = c * T0 ^ 2 / (Q * Z * Ta) * math.exp(Ta / T0)
+V.info("exact ignition time (lambda = 1/2), quadrature", t_half)
+V.info("large-activation limit c T0^2/(Q Z Ta) exp(Ta/T0)", t_fk)
+V.info("  its offset from the exact time (Ta/T0 = 20)", t_fk / t_half - 1)
+-- the largest error of T - T0 at 0.5, 0.8 and 0.9 t_ign (relative to the
+-- exact rise), and the ignition time, at N steps to t_ign
+local probes = {0.5, 0.8, 0.9}
+local function induction(N, tol)
+  local sim = block({Z = Z, Ta = Ta, Q = Q, order = 0}, T0)
+  sim.dt = t_half / N
+  if tol then sim.reaction_tol = tol end
+  local worst, most = 0, 0
+  for step = 1, N + N // 10 do
+    sim:step()
+    most = math.max(most, sim.reaction_substeps)
+    for _, p in ipairs(probes) do
+      if math.abs(step / N - p) < 1e-9 then
+        local T, Tx = mean(sim:particles("temperature")), T_of(sim.t)
+        worst = math.max(worst, math.abs(T - Tx) / (Tx - T0))
+      end
+    end
+  end
+  return worst, sim.ignition_time or math.huge, most
+end
+-- the mechanical step: the substeps follow the rate, not dt, so the error
+-- should not depend on it
+local errs = {}
+for k, N in ipairs {10, 20, 40} do
+  local e, ti, most = induction(N)
+  errs[k] = e
+  V.info(string.format("dt = t_ign/%d: error of T - T0 (0.5, 0.8, 0.9 t_ign)", N), e)
+  V.info(string.format("dt = t_ign/%d: most substeps of a particle in a step", N), most)
+  V.near(string.format("dt = t_ign/%d: ignition time", N), ti, t_half, 0.01, true)
+end
+V.below("temperature history within 1 % at every step size", math.max(errs[1], errs[2], errs[3]), 0.01)
+V.info("observed order in dt (10 -> 20 -> 40 steps)", math.log(errs[1] / errs[3], 2) / 2)
+-- the substep tolerance: the scheme's own order (midpoint, 2)
+local et = {}
+for k, tol in ipairs {0.1, 0.05, 0.025} do
+  local e, ti = induction(10, tol)
+  et[k] = e
+  V.info(string.format("tol %.3g: error of T - T0", tol), e)
+  V.info(string.format("tol %.3g: ignition time error", tol), ti / t_half - 1)
+end
+local p1, p2 = math.log(et[1] / et[2], 2), math.log(et[2] / et[3], 2)
+V.info("observed order in the substep tolerance (0.1 -> 0.05)", p1)
+V.info("observed order in the substep tolerance (0.05 -> 0.025)", p2)
+V.above("second order in the substep tolerance (0.05 -> 0.025)", p2, 1.7)
+
+V.case "first-order decay at constant temperature: lambda = 1 - exp(-k t)"
+do
+  local k = Z * math.exp(-Ta / T0) * 1e8 -- rate constant at T0 with Z' = 1e8 Z
+  local worst = 0
+  for _, N in ipairs {3, 17, 100} do
+    local sim = block({Z = Z * 1e8, Ta = Ta, Q = 0, order = 1}, T0)
+    local tend = 3 / k
+    sim.dt = tend / N
+    for _ = 1, N do sim:step() end
+    local lam = sim:particles("reacted")
+    local exact = 1 - math.exp(-k * sim.t)
+    for _, l in ipairs(lam) do worst = math.max(worst, math.abs(l - exact)) end
+    V.info(string.format("%d steps to k t = 3: max |lambda - exact|", N), worst)
+  end
+  V.below("round-off level at 3, 17 and 100 steps", worst, 1e-13)
+end
+
+V.case "energy: chemical energy released = heat gained by the particles"
+do
+  local sim = block({Z = Z, Ta = Ta, Q = Q, order = 1}, T0)
+  sim.dt = t_half / 20
+  for _ = 1, 30 do sim:step() end
+  local T, m, lam = sim:particles("temperature"), sim:particles("mass"),
+                    sim:particles("reacted")
+  local heat, burnt = 0, 0
+  for i = 1, #T do
+    heat = heat + m[i] * c * (T[i] - T0)
+    burnt = burnt + m[i] * Q * lam[i]
+  end
+  local chem = sim:energy().chemical
+  V.info("chemical energy released", chem)
+  V.near("sum m c (T - T0) = chemical", heat, chem, 1e-12, true)
+  V.near("sum m Q lambda = chemical", burnt, chem, 1e-12, true)
+  V.above("the block burnt (mean lambda)", sim.reacted, 0.99)
+end
+
+V.case "no reacting material: no reacted field, no chemical energy"
+do
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.25, ppc = 2}
+  sim:body {shape = mvmpm.rect {lo = {0.25, 0.25}, hi = {0.75, 0.75}},
+            material = mvmpm.elastic {K = 1e3, G = 5e2, density = 1}}
+  sim:step(2)
+  local has = false
+  for _, f in ipairs(sim:particles()) do if f == "reacted" then has = true end end
+  V.holds("no 'reacted' field", not has, has and 1 or 0)
+  V.near("chemical energy 0", sim:energy().chemical, 0, 0)
+end

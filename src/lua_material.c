@@ -82,7 +82,7 @@ static void reaction_keys(lua_State *L, const char *what, material *m) {
   m->rx.Q = chk_num(L, -1, rw, "Q", 0, 0, HUGE_VAL, CHK_REQUIRED);
   m->rx.n = chk_num(L, -1, rw, "order", 1, 0, 3, 0);
   m->rx.T_fk = chk_num(L, -1, rw, "fk", 0, 0, HUGE_VAL, CHK_OPENLO);
-  if (!(m->cp > 0))
+  if (!(m->cv > 0))
     luaL_error(L, "%s: a reacting material needs its specific heat c > 0 "
                   "(the heat of reaction Q raises T by Q / c)", what);
   lua_pop(L, 1);
@@ -92,7 +92,7 @@ static void reaction_keys(lua_State *L, const char *what, material *m) {
 static void thermal_keys(lua_State *L, const char *what, material *m) {
   m->alpha = chk_num(L, 1, what, "alpha", 0, -HUGE_VAL, HUGE_VAL, 0);
   m->T_ref = chk_num(L, 1, what, "T_ref", 0, -HUGE_VAL, HUGE_VAL, 0);
-  m->cp = chk_num(L, 1, what, "c", 0, 0, HUGE_VAL, 0);
+  m->cv = chk_num(L, 1, what, "c", 0, 0, HUGE_VAL, 0);
   reaction_keys(L, what, m);
 }
 

@@ -70,7 +70,7 @@ struct material {
   ** free; alpha = 0 keeps the material out of the thermal phase */
   double alpha, T_ref;
   /* specific heat capacity per unit mass (heat per mass and kelvin) */
-  double cp;
+  double cv;
   /* reaction (react.c) */
   react_law rx;
   /* elastic-plastic (mat_plastic.c): initial yield stress (von Mises,

@@ -110,7 +110,7 @@ static void react_part(void *arg, int t, int nparts) {
       if (mi < 0) continue;
       m = &s->mats[mi];
       if (m->rx.Z == 0 || lam[i] >= 1) continue;
-      dl = react_advance(&m->rx, m->cp, s->react_tol, s->dt, &T[i], &lam[i],
+      dl = react_advance(&m->rx, m->cv, s->react_tol, s->dt, &T[i], &lam[i],
                          s->react_ign, &tig, &ns);
       z.heat += ps->m[i] * m->rx.Q * dl;
       if (tig < z.tign) z.tign = tig;

@@ -134,6 +134,8 @@ double lshape_area(const lshape *sh);   /* < 0 if not known */
 /* lua_thermal.c: sim:temperature(T | function(t)) */
 int lsim_temperature(lua_State *L);
 double lsim_temperature_at(lua_State *L, int simidx, double t);
+/* lua_heat.c: sim:heat{...} */
+int lsim_heat(lua_State *L);
 /* lua_render.c: sim:render{...} and mvmpm.plot{...} */
 int lrender_sim(lua_State *L);
 void lrender_open(lua_State *L, int modidx);

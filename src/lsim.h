@@ -147,6 +147,8 @@ void lsim_hotspot_opts(lua_State *L, int idx, const char *what, double *T,
 void lsim_hotspot_row(lua_State *L, lsim *ls, double *count, double *frac);
 void lsim_hotspot_file(lua_State *L, lsim *ls, int k);
 double lsim_temperature_at(lua_State *L, int simidx, double t);
+/* lua_heat.c: sim:heat{...} */
+int lsim_heat(lua_State *L);
 /* lua_render.c: sim:render{...} and mvmpm.plot{...} */
 int lrender_sim(lua_State *L);
 void lrender_open(lua_State *L, int modidx);

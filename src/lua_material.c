@@ -1,6 +1,9 @@
 /*
 ** lua_material.c - material constructors:
 **   mvmpm.elastic{K=, G= | E=, nu=, density=, alpha=, T_ref=, name=}
+** and, for heat (heat.h), on every model: cv= (specific heat per unit
+** mass; m.c is the wave speed), k= (conductivity), beta= (the fraction of
+** plastic work turned to heat, 0.9)
 **   mvmpm.plastic{K=, G= | E=, nu=, density=, yield=, hardening=0,
 **                 alpha=, T_ref=, name=}
 **   mvmpm.viscoelastic{K=, G_inf=0, prony = {{G=, tau=}, ...}, density=,
@@ -83,16 +86,23 @@ static void reaction_keys(lua_State *L, const char *what, material *m) {
   m->rx.n = chk_num(L, -1, rw, "order", 1, 0, 3, 0);
   m->rx.T_fk = chk_num(L, -1, rw, "fk", 0, 0, HUGE_VAL, CHK_OPENLO);
   if (!(m->cv > 0))
-    luaL_error(L, "%s: a reacting material needs its specific heat c > 0 "
-                  "(the heat of reaction Q raises T by Q / c)", what);
+    luaL_error(L, "%s: a reacting material needs its specific heat cv > 0 "
+                  "(the heat of reaction Q raises T by Q / cv)", what);
   lua_pop(L, 1);
 }
 
-/* alpha, T_ref, c and the reaction, common to every model */
+/* alpha and T_ref, and the heat keys (heat.h): specific heat cv > 0
+** (0 when absent: a scene with heat then refuses the material),
+** conductivity k >= 0, Taylor-Quinney fraction beta in [0, 1] (0.9) */
 static void thermal_keys(lua_State *L, const char *what, material *m) {
   m->alpha = chk_num(L, 1, what, "alpha", 0, -HUGE_VAL, HUGE_VAL, 0);
   m->T_ref = chk_num(L, 1, what, "T_ref", 0, -HUGE_VAL, HUGE_VAL, 0);
-  m->cv = chk_num(L, 1, what, "c", 0, 0, HUGE_VAL, 0);
+  lua_getfield(L, 1, "cv");
+  if (!lua_isnil(L, -1))
+    m->cv = chk_num(L, 1, what, "cv", 0, 0, HUGE_VAL, CHK_OPENLO);
+  lua_pop(L, 1);
+  m->kcond = chk_num(L, 1, what, "k", 0, 0, HUGE_VAL, 0);
+  m->beta = chk_num(L, 1, what, "beta", 0.9, 0, 1, 0);
   reaction_keys(L, what, m);
 }
 
@@ -104,7 +114,8 @@ static material *newmat(lua_State *L) {
 
 static int elastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
-                                     "alpha", "T_ref", "c", "reaction", NULL};
+                                     "alpha", "T_ref", "cv", "k", "beta",
+                                     "reaction", NULL};
   const char *what = "elastic";
   material tmp, *m;
   double K, G, rho;
@@ -125,7 +136,8 @@ static int elastic(lua_State *L) {
 static int plastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
                                      "yield", "hardening", "alpha", "T_ref",
-                                     "c", "reaction", NULL};
+                                     "cv", "k", "beta", "reaction",
+                                     NULL};
   const char *what = "plastic";
   material tmp, *m;
   double K, G, rho, y, H;
@@ -176,7 +188,8 @@ static int prony(lua_State *L, const char *what, double *G, double *tau) {
 
 static int viscoelastic(lua_State *L) {
   static const char *const keys[] = {"K", "G_inf", "prony", "density", "name",
-                                     "alpha", "T_ref", "c", "reaction", NULL};
+                                     "alpha", "T_ref", "cv", "k", "beta",
+                                     "reaction", NULL};
   const char *what = "viscoelastic";
   material tmp, *m;
   double K, Ginf, rho, G[MAT_MAXPRONY], tau[MAT_MAXPRONY];
@@ -217,6 +230,9 @@ static int index_(lua_State *L) {
     lua_pushnumber(L, 9 * m->K * m->G / (3 * m->K + m->G));
   else if (strcmp(k, "alpha") == 0) lua_pushnumber(L, m->alpha);
   else if (strcmp(k, "T_ref") == 0) lua_pushnumber(L, m->T_ref);
+  else if (strcmp(k, "cv") == 0) lua_pushnumber(L, m->cv);
+  else if (strcmp(k, "k") == 0) lua_pushnumber(L, m->kcond);
+  else if (strcmp(k, "beta") == 0) lua_pushnumber(L, m->beta);
   else if (m->model == &mat_plastic && strcmp(k, "yield") == 0)
     lua_pushnumber(L, m->yield);
   else if (m->model == &mat_plastic && strcmp(k, "hardening") == 0)

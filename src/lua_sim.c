@@ -697,6 +697,18 @@ static int lenergy(lua_State *L) {
   setnum(L, "angmom", s->e.angmom);
   setnum(L, "jmin", s->e.jmin);
   setnum(L, "jmax", s->e.jmax);
+  if (s->heat) { /* heat.h */
+    setnum(L, "heat_friction", s->e.heat_friction);
+    setnum(L, "heat_plastic", s->e.heat_plastic);
+    setnum(L, "heat_viscous", s->e.heat_viscous);
+    setnum(L, "heat_source", s->e.heat_source);
+    setnum(L, "heat_wall", s->e.heat_wall);
+    setnum(L, "cold_work", s->e.cold);
+    setnum(L, "heat_boundary", s->e.heat_boundary);
+    setnum(L, "thermal_energy", s->e.heat_thermal);
+    setnum(L, "heat_residual", sim_heat_residual(s));
+    setnum(L, "residual_with_heat", sim_residual_all(s));
+  }
   return 1;
 }
 
@@ -962,6 +974,7 @@ void lsim_open(lua_State *L) {
       {"particles", lparticles}, {"stable_dt", lstable_dt},
       {"temperature", lsim_temperature}, {"render", lrender_sim},
       {"hotspots", lsim_hotspots},
+      {"heat", lsim_heat},
       {"wall_force", lwall_force}, {"overlap", loverlap},
       {"contacts", lcontacts}, {"state", lstate},
       {"settle", lsettle}, {"at_end", lat_end},

@@ -43,6 +43,8 @@ typedef struct mat_sums {
   size_t nbadj;    /* particles with det F <= 0 */
   double plastic;  /* plastic work of this step */
   double viscous;  /* viscous dissipation of this step */
+  double heat;     /* plastic work of this step turned to heat (beta W_p;
+                      scenes with heat only, heat.h) */
 } mat_sums;
 
 typedef struct mat_model {
@@ -69,8 +71,6 @@ struct material {
   ** material and the temperature at which the seeded shape is stress
   ** free; alpha = 0 keeps the material out of the thermal phase */
   double alpha, T_ref;
-  /* specific heat capacity per unit mass (heat per mass and kelvin) */
-  double cv;
   /* reaction (react.c) */
   react_law rx;
   /* elastic-plastic (mat_plastic.c): initial yield stress (von Mises,
@@ -81,6 +81,13 @@ struct material {
   double G_inf;
   int nprony;
   double prony_G[MAT_MAXPRONY], prony_tau[MAT_MAXPRONY];
+  /* heat (heat.h, conduct.h): specific heat per unit mass (0: not
+  ** given; a scene with heat needs it > 0), thermal conductivity, and the
+  ** Taylor-Quinney fraction of plastic work that becomes heat */
+  double cv, kcond, beta;
+  /* the particle field the models add each step's heat to (J): set by
+  ** the simulation, -1 in a scene without heat */
+  int fheat;
   /* per-particle state fields the model registered (indices into the
   ** particle field table, set by setup) */
   int field[MAT_MAXFIELDS];

@@ -10,9 +10,9 @@
 ** moves, and never overshoots lambda = 1, however stiff the step.
 */
 #include <math.h>
+#include "heat.h"
 #include "par.h"
 #include "react.h"
-#include "thermal.h"
 
 double react_k(const react_law *r, double T) {
   if (r->T_fk > 0) /* Frank-Kamenetskii: exponent linear in T */
@@ -76,7 +76,7 @@ double react_advance(const react_law *r, double cap, double tol, double dt,
 }
 
 int react_enable(sim *s) {
-  if (thermal_enable(s)) return -1;
+  if (heat_enable(s)) return -1; /* the reaction's heat goes through heat.h */
   if (s->freact < 0) {
     s->freact = particles_add_field(&s->ps, "reacted", 1, PF_DOUBLE, "1",
                                     PF_OUTPUT | PF_RESTART);
@@ -94,7 +94,9 @@ _Static_assert(sizeof(react_sums) <= SIM_RED_BYTES, "react_sums fit");
 static void react_part(void *arg, int t, int nparts) {
   sim *s = arg;
   particles *ps = &s->ps;
-  double *T = particles_comp(ps, s->ftemp, 0);
+  const double *T = particles_comp(ps, s->ftemp, 0);
+  const double *q = particles_comp(ps, s->heat->fq, 0);
+  const double *qc = s->heat->conduct ? s->heat->hcond : NULL;
   double *lam = particles_comp(ps, s->freact, 0);
   react_sums *red = s->red;
   size_t n = ps->n, c, c0, c1, i, i0, i1;
@@ -105,14 +107,21 @@ static void react_part(void *arg, int t, int nparts) {
     for (i = i0; i < i1; i++) {
       int32_t mi = s->bmat[ps->body[i]];
       const material *m;
-      double tig = INFINITY, dl;
+      double tig = INFINITY, dl, Ti, qi;
       int ns;
       if (mi < 0) continue;
       m = &s->mats[mi];
       if (m->rx.Z == 0 || lam[i] >= 1) continue;
-      dl = react_advance(&m->rx, m->cv, s->react_tol, s->dt, &T[i], &lam[i],
+      /* from the temperature the step's other heat leads to (heat_update
+      ** adds it after this phase); a held body keeps its own */
+      Ti = T[i];
+      if (!s->bodies[ps->body[i]].hold)
+        Ti += (q[i] + (qc ? qc[i] : 0)) / (ps->m[i] * m->cv);
+      dl = react_advance(&m->rx, m->cv, s->react_tol, s->dt, &Ti, &lam[i],
                          s->react_ign, &tig, &ns);
-      z.heat += ps->m[i] * m->rx.Q * dl;
+      qi = ps->m[i] * m->rx.Q * dl;
+      heat_add(s, i, qi); /* T reaches Ti in heat_update */
+      z.heat += qi;
       if (tig < z.tign) z.tign = tig;
       if (ns > z.nsub) z.nsub = ns;
     }
@@ -128,6 +137,7 @@ void react(sim *s) {
   par_run(s->par, react_part, s);
   for (c = 0; c < nc; c++) { /* chunk order: any thread count */
     s->e.chemical += red[c].heat;
+    s->e.heat_source += red[c].heat;
     if (red[c].tign < tign) tign = red[c].tign;
     if (red[c].nsub > nsub) nsub = red[c].nsub;
   }

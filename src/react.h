@@ -10,14 +10,18 @@
 ** k(T) = exp(-Ta / T0) exp(Ta (T - T0) / T0^2) about a chosen T0.
 **
 ** The phase runs once per step after everything else that heats the
-** particles, as its own operator: each particle's (T, lambda) is
+** particles (conduction, friction, plastic and viscous heat: heat.h),
+** as its own operator, before heat_update: each particle's (T, lambda) is
 ** advanced over the step by the exact solution at a frozen rate
 ** constant (exact for constant T, so first-order decay is exact to
 ** round-off), with the rate constant taken at the midpoint temperature
 ** of the substep (second order), and with substeps as short as needed
-** for the exponent Ta / T to change by at most `tol` over each.  The
-** heat of the substep is Q d lambda, added to T exactly, so the chemical
-** energy released equals the particles' gain in heat to round-off.  A
+** for the exponent Ta / T to change by at most `tol` over each.  It
+** starts from the temperature the step's other heat leads to, T + (q +
+** conducted) / (m c); the heat of each substep, Q d lambda, moves T
+** exactly, and the step's total m Q d lambda goes to the particle with
+** heat_add, so heat_update brings T to where the substeps ended and the
+** chemical energy released equals the particles' gain to round-off.  A
 ** run-away therefore resolves its own time scale whatever the
 ** mechanical step, and a step costs one rate evaluation per particle
 ** (two with the midpoint) while nothing runs away.
@@ -52,7 +56,7 @@ double react_advance(const react_law *r, double cap, double tol, double dt,
                      int *nsub);
 
 /* register the "reacted" field (once) and mark the simulation reacting;
-** the temperature field is made too.  0, or -1 out of memory */
+** heat is switched on (heat_enable) if it is not.  0, or -1 with s->err */
 int react_enable(sim *s);
 
 /* react(s) (sim.h) is the phase over s->dt, after every other heat

@@ -61,6 +61,9 @@ typedef struct body {
   int driven;
   double vdrive[DIM];
   double force[DIM]; /* driven: force it put on the other bodies, last step */
+  int hold;          /* heat (heat.h): its particles are held at T_hold, a
+                        reservoir */
+  double T_hold;
 } body;
 
 /* a contact law between two fields: friction, and the most their
@@ -87,6 +90,13 @@ typedef struct sim_energy {
                      ** particles, against FLIP's increment (g2p.c) */
   double impact;     /* what the normal impulses of contact and walls
                      ** dissipate: impacts are inelastic at a node */
+  /* heat (heat.h), in scenes with heat only: what the sources put into
+  ** the particles (friction, beta x plastic, viscous, heat_add's), what
+  ** wall friction gave the walls, the cold work (1 - beta) x plastic,
+  ** what came in through walls and held bodies (conduct.c), and the
+  ** thermal energy sum m c (T - T0) the particles hold */
+  double heat_friction, heat_plastic, heat_viscous, heat_source;
+  double heat_wall, cold, heat_boundary, heat_thermal;
   double initial;    /* kinetic + strain + potential before the first step */
   double potential0; /* potential before the first step */
   double mom[DIM];
@@ -144,6 +154,7 @@ typedef struct sim {
   sim_energy e;
   int ftemp;         /* particle field "temperature", -1 if no scene uses it */
   int temp_on;       /* a uniform temperature is imposed (thermal.c) */
+  struct heat_state *heat; /* heat.h: NULL in a scene without heat */
   double temp;       /* ... its value at the end of the next step */
   int freact;        /* particle field "reacted", -1 if nothing reacts */
   int react_on;      /* some material reacts: the reaction phase runs */
@@ -231,6 +242,15 @@ double sim_total(const sim *s);
 ** plastic - viscous - transfer - total; zero up to the error of the
 ** step */
 double sim_residual(const sim *s);
+/* with heat (heat.h): the heat the budget booked into the particles
+** (sources + walls and held bodies) less the thermal energy they hold,
+** sum m c (T - T0); zero up to round-off when conduction conserves */
+double sim_heat_residual(const sim *s);
+/* the budget of mechanical and thermal energy together: initial +
+** boundary + thermal work + heat_source + heat_boundary - total -
+** thermal energy - cold work - heat_wall - settled - transfer - impact;
+** sim_residual when heat is off */
+double sim_residual_all(const sim *s);
 /* the budget's scale, which no choice of origin changes (the potential's
 ** own value does): the kinetic and strain energy at the start plus the
 ** size of every flow since, |boundary| + |thermal| + |potential change|

@@ -3,7 +3,7 @@
 --
 --   local K = require "mvmpm.kinetics"
 --   local hmx = mvmpm.elastic {E = 15e9, nu = 0.3, density = K.pbx9501.density,
---                              c = K.pbx9501.c, reaction = K.hmx}
+--                              cv = K.pbx9501.cv, reaction = K.hmx}
 --
 -- These are published values, quoted as published; none was fitted or
 -- adjusted here.  The numbers were read from the input file named under
@@ -30,9 +30,9 @@ K.hmx = {
 
 -- PBX 9501 (the reactant material of the same Uintah input): density
 -- 1840 kg/m^3, specific heat 996 J/(kg K), thermal conductivity
--- 0.452 W/(m K).  For a material's density, c and k keys.
+-- 0.452 W/(m K).  For a material's density, cv and k keys.
 K.pbx9501 = {
-  density = 1840, c = 996, k = 0.452,
+  density = 1840, cv = 996, k = 0.452,
   source = "Uintah SteadyBurn_2dRT.ups, material 'Reactant' (PBX 9501)",
 }
 

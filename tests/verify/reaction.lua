@@ -49,7 +49,7 @@ local function block(reaction, temp)
   local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.25, ppc = 2,
                          shape = "gimp", update = "usavg"}
   sim:body {shape = mvmpm.rect {lo = {0.25, 0.25}, hi = {0.75, 0.75}},
-            material = mvmpm.elastic {K = 1e3, G = 5e2, density = 1, c = c,
+            material = mvmpm.elastic {K = 1e3, G = 5e2, density = 1, cv = c,
                                       reaction = reaction},
             temperature = temp}
   return sim
@@ -142,11 +142,15 @@ do
   V.near("sum m c (T - T0) = chemical", heat, chem, 1e-12, true)
   V.near("sum m Q lambda = chemical", burnt, chem, 1e-12, true)
   V.above("the block burnt (mean lambda)", sim.reacted, 0.99)
+  local e = sim:energy()
+  V.near("the heat budget books it as a source (heat_source = chemical)", e.heat_source, chem, 1e-12, true)
+  V.below("heat residual / chemical", math.abs(e.heat_residual) / chem, 1e-12)
 end
 
 V.case "no reacting material: no reacted field, no chemical energy"
 do
-  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.25, ppc = 2}
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.25, ppc = 2,
+                         shape = "gimp", update = "usavg"}
   sim:body {shape = mvmpm.rect {lo = {0.25, 0.25}, hi = {0.75, 0.75}},
             material = mvmpm.elastic {K = 1e3, G = 5e2, density = 1}}
   sim:step(2)

@@ -224,6 +224,7 @@ static void visit_sim(ckv *v, sim *s) {
   ** and its potential's start is taken as where it was then */
   vreal_opt(v, "e.settled", &e->settled, 0);
   vreal_opt(v, "e.chemical", &e->chemical, 0);
+  vreal_opt(v, "e.latent", &e->latent, 0);
   vreal_opt(v, "t_ignition", &s->t_ignition, INFINITY);
   vreal_opt(v, "e.potential0", &e->potential0, e->potential);
   vvec(v, "e.", "mom", e->mom, DIM);

@@ -73,7 +73,7 @@ double heat_energy(const sim *s) {
 double heat_booked(const sim *s) {
   const sim_energy *e = &s->e;
   return e->heat_friction + e->heat_plastic + e->heat_viscous +
-         e->heat_source + e->heat_boundary;
+         e->heat_source + e->heat_boundary - e->latent;
 }
 
 int heat_start(sim *s) {
@@ -272,5 +272,5 @@ double sim_residual_all(const sim *s) {
   if (!s->heat) return sim_residual(s);
   return sim_residual(s) + e->friction + e->plastic + e->viscous +
          e->heat_source + e->heat_boundary - e->heat_thermal - e->cold -
-         e->heat_wall;
+         e->heat_wall - e->latent;
 }

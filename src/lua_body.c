@@ -14,6 +14,7 @@
 #include "interrupt.h"
 #include "lcheck.h"
 #include "lsim.h"
+#include "melt.h"
 #include "react.h"
 #include "thermal.h"
 
@@ -486,6 +487,14 @@ int lbody_new(lua_State *L) {
   /* a reacting material: every particle starts unburnt (zero-filled) */
   if (mi >= 0 && s->mats[mi].rx.Z > 0 && react_enable(s))
     luaL_error(L, "body: %s", s->err);
+  /* the melting cap of friction heat needs heat on already */
+  if (mi >= 0 && s->mats[mi].T_melt > 0) {
+    if (!s->heat)
+      luaL_error(L, "body '%s': its material '%s' has T_melt, which caps "
+                    "friction heating: call sim:heat{} before adding the body",
+                 name, s->mats[mi].name);
+    if (melt_enable(s)) luaL_error(L, "body: %s", s->err);
+  }
   if (tfun) { /* temperature = function(x, y) return T end */
     double *T = particles_comp(&s->ps, s->ftemp, 0);
     int fn;

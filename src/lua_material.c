@@ -103,6 +103,7 @@ static void thermal_keys(lua_State *L, const char *what, material *m) {
   lua_pop(L, 1);
   m->kcond = chk_num(L, 1, what, "k", 0, 0, HUGE_VAL, 0);
   m->beta = chk_num(L, 1, what, "beta", 0.9, 0, 1, 0);
+  m->T_melt = chk_num(L, 1, what, "T_melt", 0, 0, HUGE_VAL, CHK_OPENLO);
   reaction_keys(L, what, m);
 }
 
@@ -115,7 +116,7 @@ static material *newmat(lua_State *L) {
 static int elastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
                                      "alpha", "T_ref", "cv", "k", "beta",
-                                     "reaction", NULL};
+                                     "reaction", "T_melt", NULL};
   const char *what = "elastic";
   material tmp, *m;
   double K, G, rho;
@@ -137,7 +138,7 @@ static int plastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
                                      "yield", "hardening", "alpha", "T_ref",
                                      "cv", "k", "beta", "reaction",
-                                     NULL};
+                                     "T_melt", NULL};
   const char *what = "plastic";
   material tmp, *m;
   double K, G, rho, y, H;
@@ -189,7 +190,7 @@ static int prony(lua_State *L, const char *what, double *G, double *tau) {
 static int viscoelastic(lua_State *L) {
   static const char *const keys[] = {"K", "G_inf", "prony", "density", "name",
                                      "alpha", "T_ref", "cv", "k", "beta",
-                                     "reaction", NULL};
+                                     "reaction", "T_melt", NULL};
   const char *what = "viscoelastic";
   material tmp, *m;
   double K, Ginf, rho, G[MAT_MAXPRONY], tau[MAT_MAXPRONY];

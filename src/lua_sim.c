@@ -682,6 +682,7 @@ static int lenergy(lua_State *L) {
   setnum(L, "thermal_work", s->e.thermal);
   setnum(L, "settled", s->e.settled);
   setnum(L, "chemical", s->e.chemical);
+  setnum(L, "latent", s->e.latent);
   setnum(L, "transfer", s->e.transfer);
   setnum(L, "impact", s->e.impact);
   setnum(L, "numerical", s->e.transfer + s->e.impact);

@@ -73,6 +73,8 @@ struct material {
   double alpha, T_ref;
   /* reaction (react.c) */
   react_law rx;
+  /* > 0: friction heat does not raise T above it (melt.h) */
+  double T_melt;
   /* elastic-plastic (mat_plastic.c): initial yield stress (von Mises,
   ** equivalent stress) and linear isotropic hardening modulus */
   double yield, hardening;

@@ -35,6 +35,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->lp = 0.5 / ppc;
   s->ftemp = -1;
   s->freact = -1;
+  s->fmelt = -1;
   s->react_tol = REACT_TOL;
   s->react_ign = 0.5;
   s->t_ignition = INFINITY;
@@ -590,6 +591,7 @@ int sim_step(sim *s) {
   if (s->temp_on) thermal(s);
   if (constitutive(s, usavg ? 0.5 * s->dt : s->dt)) return -1;
   /* after every other source of heat of the step */
+  if (s->fmelt >= 0) melt(s);
   if (s->react_on) react(s);
   prof_mark(s->prof, PROF_CONST);
   if (s->heat) {

@@ -97,6 +97,8 @@ typedef struct sim_energy {
   ** thermal energy sum m c (T - T0) the particles hold */
   double heat_friction, heat_plastic, heat_viscous, heat_source;
   double heat_wall, cold, heat_boundary, heat_thermal;
+  double latent;     /* friction heat the melting cap took (melt.h): heat
+                     ** that left the particles' temperature */
   double initial;    /* kinetic + strain + potential before the first step */
   double potential0; /* potential before the first step */
   double mom[DIM];
@@ -162,6 +164,8 @@ typedef struct sim {
   double react_ign;  /* the reacted fraction that counts as ignition */
   double t_ignition; /* when a particle first passed it; INFINITY before */
   int react_nsub;    /* most substeps one particle took, last step */
+  int fmelt;         /* melt.h: friction heat already seen, -1 if no
+                     ** material caps friction heating at T_melt */
   double vmax;       /* fastest particle of the last step */
   size_t nout;       /* particles outside the domain after the last move */
   double mcut_rel;   /* mcut as a fraction of the lightest particle */
@@ -304,6 +308,7 @@ int constitutive(sim *s, double dt); /* sim.c: each material's update
                                   over dt */
 void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */
 void react(sim *s);            /* react.c: reaction and its heat */
+void melt(sim *s);             /* melt.c: friction heat capped at T_melt */
 /* a warning when the transfer's losses are large against the friction
 ** work booked, or NULL (sim.c) */
 const char *sim_budget_advice(const sim *s);

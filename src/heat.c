@@ -108,7 +108,8 @@ int heat_start(sim *s) {
     }
   if (!(h->hn = calloc(s->g.nnodes, sizeof *h->hn))) goto oom;
   if (conduct_start(s)) return -1;
-  {
+  h->ready = 1;
+  if (!s->started) {
     const particles *ps = &s->ps;
     double *T = particles_comp(ps, s->ftemp, 0);
     size_t i;

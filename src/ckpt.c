@@ -21,6 +21,7 @@
 #include "ckpt.h"
 #include "lauxlib.h"
 #include "lsim.h"
+#include "heat.h"
 #include "lstate.h"
 #include "sandbox.h"
 #include "pcheck.h"
@@ -232,6 +233,17 @@ static void visit_sim(ckv *v, sim *s) {
   vreal(v, "e.jmin", &e->jmin);
   vreal(v, "e.jmax", &e->jmax);
   VI(v, "e.nbadj", e->nbadj, size_t);
+  if (s->heat) { /* heat.h: the budget's heat terms and its origin */
+    vreal_opt(v, "e.heat_friction", &e->heat_friction, 0);
+    vreal_opt(v, "e.heat_plastic", &e->heat_plastic, 0);
+    vreal_opt(v, "e.heat_viscous", &e->heat_viscous, 0);
+    vreal_opt(v, "e.heat_source", &e->heat_source, 0);
+    vreal_opt(v, "e.heat_wall", &e->heat_wall, 0);
+    vreal_opt(v, "e.cold", &e->cold, 0);
+    vreal_opt(v, "e.heat_boundary", &e->heat_boundary, 0);
+    vreal_opt(v, "e.heat_thermal", &e->heat_thermal, 0);
+    vreal_opt(v, "heat.E0", &s->heat->E0, 0);
+  }
   for (k = 0; k < NSIDES; k++) {
     side *sd = &s->sides[k];
     snprintf(pre, sizeof pre, "side.%s.", side_names[k]);

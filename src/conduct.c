@@ -277,8 +277,12 @@ static double walls(sim *s, int perfield, double dt) {
     const heat_wall *w = &h->walls[k];
     int d = k / 2, o = 1 - d, first, last, line, j;
     if (w->kind == HEAT_INSULATED || g->periodic[d]) continue;
-    if (k & 1) { first = g->pad + g->cells[d]; last = g->n[d] - 1; }
-    else { first = 0; last = g->pad; }
+    /* the wall line and the ghost lines; a film also the lines inside
+    ** whose nodes' support reaches the wall (the pad), so that their
+    ** areas add up to the material's face on the wall */
+    int inner = w->kind == HEAT_FILM ? g->pad : 0;
+    if (k & 1) { first = g->pad + g->cells[d] - inner; last = g->n[d] - 1; }
+    else { first = 0; last = g->pad + inner; }
     for (line = first; line <= last; line++)
       for (j = 0; j < g->n[o]; j++) {
         int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;

@@ -94,7 +94,7 @@ int heat_start(sim *s) {
     m = &s->mats[s->bmat[b]];
     if (!(m->cv > 0)) {
       snprintf(s->err, sizeof s->err, "heat: material '%s' (body '%s') has "
-               "no specific heat: give c > 0 (J/(kg K)) in its constructor",
+               "no specific heat: give cv > 0 (per unit mass) in its constructor",
                m->name, s->bodies[b].name);
       return -1;
     }
@@ -108,7 +108,8 @@ int heat_start(sim *s) {
     }
   if (!(h->hn = calloc(s->g.nnodes, sizeof *h->hn))) goto oom;
   if (conduct_start(s)) return -1;
-  {
+  h->ready = 1;
+  if (!s->started) {
     const particles *ps = &s->ps;
     double *T = particles_comp(ps, s->ftemp, 0);
     size_t i;
@@ -147,10 +148,10 @@ void heat_contact(sim *s, const int32_t *slots, int ns, int32_t drv,
                   double fric) {
   heat_state *h = s->heat;
   const grid *g = &s->g;
-  double w[16], sum = 0;
+  double w[64], sum = 0; /* contact.c gathers at most 64 slots */
   int k, n = 0, lo = -1;
   if (fric == 0) return;
-  for (k = 0; k < ns && k < 16; k++) {
+  for (k = 0; k < ns && k < 64; k++) {
     int32_t sl = slots[k], f = g->sfield[sl];
     w[k] = 0;
     if (sl == drv || s->fdriven[f] >= 0 || !(g->sm[sl] > s->mcut)) continue;
@@ -160,16 +161,16 @@ void heat_contact(sim *s, const int32_t *slots, int ns, int32_t drv,
   }
   /* two sides: the first field takes share, the other the rest */
   if (n == 2 && h->split == HEAT_SPLIT_SHARE)
-    for (k = 0; k < ns && k < 16; k++)
+    for (k = 0; k < ns && k < 64; k++)
       if (w[k] > 0) w[k] = k == lo ? h->share : 1 - h->share;
-  for (k = 0; k < ns && k < 16; k++) sum += w[k];
+  for (k = 0; k < ns && k < 64; k++) sum += w[k];
   if (!(sum > 0)) { /* no side takes heat: equal among the material */
-    for (k = 0; k < ns && k < 16; k++)
+    for (k = 0; k < ns && k < 64; k++)
       w[k] = s->fdriven[g->sfield[slots[k]]] < 0 && g->sm[slots[k]] > 0;
-    for (sum = 0, k = 0; k < ns && k < 16; k++) sum += w[k];
+    for (sum = 0, k = 0; k < ns && k < 64; k++) sum += w[k];
     if (!(sum > 0)) return;
   }
-  for (k = 0; k < ns && k < 16; k++)
+  for (k = 0; k < ns && k < 64; k++)
     if (w[k] > 0) h->hs[slots[k]] += fric * (w[k] / sum);
 }
 

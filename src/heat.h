@@ -75,6 +75,8 @@ typedef struct heat_state {
   size_t nsub;     /* conduction substeps of the last step */
   double dtc;      /* conduction's stable step of the last step */
   double E0;       /* sum m c T at the start (thermal energy origin) */
+  int ready;       /* heat_start ran (at the first step, or the first
+                      after a restart) */
 } heat_state;
 
 /* switch heat on (before the first step): registers the particle fields
@@ -82,8 +84,10 @@ typedef struct heat_state {
 ** accumulator, and the defaults (split 0.5, walls insulated, perfect
 ** contact, wall friction all to the material).  0, or -1 with s->err */
 int heat_enable(sim *s);
-/* checks at the first step (every material with c > 0, the conduction's
-** arrays); 0, or -1 with s->err */
+/* checks at the first step of this process (every material with c > 0,
+** the grid's and conduction's arrays); before the simulation's first
+** step also the held bodies' temperatures and the thermal energy's
+** origin E0 (a restart reads E0 back); 0, or -1 with s->err */
 int heat_start(sim *s);
 void heat_free(sim *s);
 

@@ -383,6 +383,12 @@ int lbody_new(lua_State *L) {
     luaL_error(L, "body '%s': give temperature or hold_temperature, not both "
                   "(a held body is at its temperature from the start)", name);
   if (!isnan(Th)) T0 = Th;
+  lua_getfield(L, 2, "driven"); /* a driven body takes no heat */
+  if (s->heat && lua_isnil(L, -1) && !(s->mats[mi].cv > 0))
+    luaL_error(L, "body '%s': with heat on, its material '%s' needs a specific "
+                  "heat: give cv > 0 (per unit mass) in its constructor", name,
+               s->mats[mi].name);
+  lua_pop(L, 1);
   exact = chk_option(L, 2, "body", "volume", 0, vols);
   bond = chk_num(L, 2, "body", "bond", 0, 0, HUGE_VAL, 0);
   skip = chk_option(L, 2, "body", "overlap", 0, ovl);

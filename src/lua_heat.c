@@ -137,6 +137,14 @@ int lsim_heat(lua_State *L) {
                   "(sim:temperature(fn)); with heat the temperature is "
                   "computed: set the initial temperature and use walls or "
                   "held bodies (hold_temperature) instead");
+  {
+    int b;
+    for (b = 0; b < s->nbody; b++)
+      if (s->bmat[b] >= 0 && !(s->mats[s->bmat[b]].cv > 0))
+        luaL_error(L, "heat: body '%s' uses material '%s', which has no "
+                      "specific heat: give cv > 0 (per unit mass) in its "
+                      "constructor", s->bodies[b].name, s->mats[s->bmat[b]].name);
+  }
   if (heat_enable(s)) luaL_error(L, "%s", s->err);
   if (!lua_isnoneornil(L, 2)) {
     luaL_checktype(L, 2, LUA_TTABLE);

@@ -48,8 +48,10 @@ void prof_effects(FILE *f, const sim *s) {
   effect(f, "plasticity", plastic, NULL);
   effect(f, "viscosity", visc, "Maxwell elements");
   effect(f, "temperature", s->ftemp >= 0,
-         s->temp_on ? (alpha ? "imposed, thermal strain" : "imposed, no alpha")
-                    : "field only");
+         s->heat ? (alpha ? "computed (heat), thermal strain"
+                          : "computed (heat), no alpha")
+         : s->temp_on ? (alpha ? "imposed, thermal strain" : "imposed, no alpha")
+                      : "field only");
   if (s->heat) {
     const heat_state *h = s->heat;
     snprintf(buf, sizeof buf, "friction split %s, wall friction %g to the "

@@ -533,9 +533,9 @@ static void reset_part(void *arg, int t, int nparts) {
 int sim_step(sim *s) {
   int musl = s->update != UPDATE_USL, usavg = s->update == UPDATE_USAVG;
   if (sim_prepare(s)) return -1;
+  if (s->heat && !s->heat->ready && heat_start(s)) return -1;
   if (!s->started) {
     /* once, at the first step: bodies are all added */
-    if (s->heat && heat_start(s)) return -1;
     if (s->ftemp >= 0) thermal_prestress(s);
     particles_fit(&s->ps); /* drop the seeding slack */
     sim_begin(s);

@@ -191,3 +191,38 @@ do
   V.info("... measured delta_c = 2 r_c^2 (exact 2.00)", 2 * rc * rc)
   V.info("... CPU s of the bisection", cpu, "s")
 end
+
+-- (e) The melting cap of friction heating: a block slid along a frictional
+-- floor (0.75 of the friction work to the material, no conduction), with
+-- and without T_melt between the start and the peak the free run reaches.
+V.case "melting cap: friction heat stops at T_melt, the rest is latent heat"
+do
+  local function slide(T_melt)
+    local sim = mvmpm.sim {
+      domain = {x = {0, 3}, y = {0, 1}}, cell = 0.1, ppc = 2, shape = "bspline2",
+      gravity = {0, -1}, t_end = 1,
+      sides = {left = "periodic", right = "periodic", bottom = {"wall", friction = 0.3},
+               top = "wall"}}
+    sim:heat {wall_friction = 0.75}
+    local mat = mvmpm.elastic {K = 400, G = 200, density = 1, cv = 3, T_melt = T_melt}
+    sim:body {shape = mvmpm.rect {lo = {1, 0}, hi = {2, 0.5}}, material = mat,
+              velocity = {1, 0}, temperature = 20}
+    sim:run(0.5)
+    local T, m = sim:particles("temperature"), sim:particles("mass")
+    local Tmax, heat = -math.huge, 0
+    for i = 1, #T do Tmax = math.max(Tmax, T[i]); heat = heat + m[i] * 3 * (T[i] - 20) end
+    return Tmax, heat, sim:energy()
+  end
+  local Tfree, hfree, efree = slide(nil)
+  local Tm = 20 + 0.5 * (Tfree - 20)
+  local Tcap, hcap, ecap = slide(Tm)
+  V.info("peak temperature without the cap", Tfree)
+  V.near("no cap: no latent heat", efree.latent, 0, 0)
+  V.below("with T_melt halfway: peak temperature - T_melt", Tcap - Tm, 1e-12 * Tm)
+  V.above("latent heat booked", ecap.latent, 0.01 * hfree)
+  V.near("heat held + latent = 0.75 friction work", (hcap + ecap.latent) / (0.75 * ecap.dissipated),
+         1, 1e-10)
+  V.below("heat residual / friction work", math.abs(ecap.heat_residual) / ecap.dissipated, 1e-10)
+  V.near("the motion does not change (friction work with and without the cap)",
+         ecap.dissipated, efree.dissipated, 0)
+end

@@ -4,9 +4,9 @@
 -- radius is found by bisection (the grid scaled with the radius: n cells
 -- per radius) and given as delta_c = 2 r_c^2 (the kinetics make delta =
 -- 2 r^2).  Reference: delta_c = 2.00 for the infinite cylinder, exact
--- for the linearised exponent (fk = T0).  With the Arrhenius exponent at
--- Ta/T0 = 20 the critical delta is larger by the finite-activation
--- correction; it is reported beside the fk case at three temperatures.
+-- for the linearised exponent (fk = T0).  The Arrhenius exponent is run
+-- at three temperatures with Ta/T0 = 20 and the Todes number fixed, so
+-- the three are one problem in scaled units (a check of the scaling).
 -- Also the steady peak at delta = 0.25 (exact 0.0657) at the centre and
 -- the largest anywhere.
 --

@@ -29,8 +29,8 @@ void lsim_hotspot_opts(lua_State *L, int idx, const char *what, double *T,
                        double *link) {
   static const char *const keys[] = {"threshold", "link", NULL};
   if (!lua_istable(L, idx))
-    luaL_error(L, "%s: give a table {threshold = T, link = %g} (got %s)", what,
-               HOTSPOT_LINK, luaL_typename(L, idx));
+    luaL_error(L, "%s: give a table {threshold = T, link = 1.5} (got %s)",
+               what, luaL_typename(L, idx));
   chk_keys(L, idx, what, keys);
   *T = chk_num(L, idx, what, "threshold", 0, -HUGE_VAL, HUGE_VAL,
                CHK_REQUIRED);

@@ -75,8 +75,8 @@ static void reaction_keys(lua_State *L, const char *what, material *m) {
   lua_getfield(L, -1, "Ea"); hasEa = !lua_isnil(L, -1); lua_pop(L, 1);
   if (hasTa == hasEa)
     luaL_error(L, "%s: give the activation temperature Ta = E/R (K), or the "
-                  "activation energy Ea with R (default %g J/(mol K)), not "
-                  "both", rw, GAS_R);
+                  "activation energy Ea with R (default 8.314462618 "
+                  "J/(mol K)), not both", rw);
   if (hasTa)
     m->rx.Ta = chk_num(L, -1, rw, "Ta", 0, 0, HUGE_VAL, CHK_OPENLO);
   else

@@ -86,6 +86,9 @@ do
   V.near("regions", #hs, 0, 0)
   V.near("area fraction", hs.area_fraction, 0, 0)
   local ok, err = pcall(sim.hotspots, sim, {threshold = 600, link = -1})
+  local ok2, err2 = pcall(sim.hotspots, sim, 600)
+  V.holds("a number instead of the table is refused, saying what to give",
+          not ok2 and tostring(err2):find("threshold = T") ~= nil, 0, tostring(err2))
   V.holds("link <= 0 is refused, naming the field", not ok and
           tostring(err):find("link") ~= nil, 0, tostring(err))
 end
@@ -111,4 +114,30 @@ do
   if f then f:close() end
   os.remove(path)
   V.holds("the size-temperature plot is a PNG with both spots", sig == "\137PNG\r\n\26\n" and n == 2, n)
+end
+
+V.case "bad reaction input: clear errors naming the field"
+do
+  local function err(t)
+    local ok, e = pcall(mvmpm.elastic, t)
+    return not ok and tostring(e) or ""
+  end
+  local base = {K = 1, G = 0.5, density = 1, cv = 1}
+  local function with(r, extra)
+    local t = {}
+    for k, v in pairs(base) do t[k] = v end
+    for k, v in pairs(extra or {}) do t[k] = v end
+    t.reaction = r
+    return t
+  end
+  V.holds("Z <= 0", err(with {Z = 0, Ta = 1e4, Q = 1}):find("'Z'") ~= nil, 0,
+          err(with {Z = 0, Ta = 1e4, Q = 1}))
+  V.holds("both Ta and Ea", err(with {Z = 1, Ta = 1e4, Ea = 1e5, Q = 1}):find("not both") ~= nil, 0)
+  V.holds("order 4", err(with {Z = 1, Ta = 1e4, Q = 1, order = 4}):find("'order'") ~= nil, 0,
+          err(with {Z = 1, Ta = 1e4, Q = 1, order = 4}))
+  V.holds("a misspelt key", err(with {Z = 1, Ta = 1e4, Qq = 1}):find("Qq") ~= nil, 0,
+          err(with {Z = 1, Ta = 1e4, Qq = 1}))
+  local t = with {Z = 1, Ta = 1e4, Q = 1}
+  t.cv = nil
+  V.holds("no cv", err(t):find("cv > 0") ~= nil, 0, err(t))
 end

@@ -20,6 +20,26 @@
 
 #define NARR (6 + DIM) /* C, T, Q, T0, H, HT, A[DIM] */
 
+/* det F of particle i: its volume is J V0 */
+static inline double jac(const particles *ps, size_t i) {
+#if DIM == 2
+  return ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
+#else
+  return ps->F[0][i] * (ps->F[4][i] * ps->F[8][i] - ps->F[5][i] * ps->F[7][i]) -
+         ps->F[1][i] * (ps->F[3][i] * ps->F[8][i] - ps->F[5][i] * ps->F[6][i]) +
+         ps->F[2][i] * (ps->F[3][i] * ps->F[7][i] - ps->F[4][i] * ps->F[6][i]);
+#endif
+}
+
+/* node of wall line `line` along d, column j of the other dimension */
+static inline int32_t wall_node(const grid *g, int d, int line, int j) {
+#if DIM == 2
+  return d == 0 ? line + g->n[0] * j : j + g->n[0] * line;
+#else
+#error "conduct.c: the walls' node lines are written for 2-D"
+#endif
+}
+
 static double **arrs(heat_state *h, int slot, double **a) {
   if (slot) {
     a[0] = h->sC; a[1] = h->sT; a[2] = h->sQ; a[3] = h->sT0; a[4] = h->sH;
@@ -145,7 +165,7 @@ STENCIL_INLINE void map_kind(sim *s, const int kind, int perfield) {
     int k, d;
     if (mi < 0) continue;
     mc = ps->m[i] * s->mats[mi].cv;
-    V = ps->vol0[i] * (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
+    V = ps->vol0[i] * jac(ps, i);
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     stencil_eval(&geo, kind, x, s->lp, &st);
     for (k = 0; k < st.n; k++) {
@@ -178,8 +198,7 @@ STENCIL_INLINE void flow_kind(sim *s, const int kind, int perfield) {
     size_t j[STENCIL_MAX];
     int sl[STENCIL_MAX], k, d;
     if (mi < 0 || !(s->mats[mi].kcond > 0)) continue;
-    kV = s->mats[mi].kcond * ps->vol0[i] *
-         (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
+    kV = s->mats[mi].kcond * ps->vol0[i] * jac(ps, i);
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     stencil_eval(&geo, kind, x, s->lp, &st);
     for (k = 0; k < st.n; k++) {
@@ -285,7 +304,7 @@ static double walls(sim *s, int perfield, double dt) {
     else { first = 0; last = g->pad + inner; }
     for (line = first; line <= last; line++)
       for (j = 0; j < g->n[o]; j++) {
-        int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;
+        int32_t n = wall_node(g, d, line, j), sl;
         if (perfield && g->head[n] >= 0) {
           for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
             in += wall_one(w, k, h->sC, h->sT, h->sA, (size_t)sl, dt);

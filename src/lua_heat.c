@@ -96,7 +96,12 @@ static void settings(lua_State *L, sim *s) {
     if (!lua_istable(L, t))
       luaL_error(L, "heat: field 'sides' must be a table {left = ..., ...} "
                     "(got %s)", luaL_typename(L, t));
-    chk_keys(L, t, "heat.sides", lsim_side_names);
+    {
+      const char *names[NSIDES + 1]; /* this dimension's sides only */
+      for (k = 0; k < NSIDES; k++) names[k] = lsim_side_names[k];
+      names[NSIDES] = NULL;
+      chk_keys(L, t, "heat.sides", names);
+    }
     for (k = 0; k < NSIDES; k++) {
       lua_getfield(L, t, lsim_side_names[k]);
       if (!lua_isnil(L, -1)) {

@@ -316,6 +316,51 @@ V.holds("kinetic, friction, plastic work equal to the bit",
         en.kinetic - eo.kinetic)
 V.above("heat on: the thermal energy the particles took", en.thermal_energy, 0.5 * (en.dissipated + en.plastic))
 
+V.case "(i) a disc (R = 0.5, D = 1) at 0 whose surface is held at 1 by a held annulus, t = 0.1"
+-- T(r, t) = 1 - sum 2 J0(l_n r / R) / (l_n J1(l_n)) exp(-l_n^2 D t / R^2),
+-- l_n the zeros of J0 (three terms: the fourth is below 1e-9 here)
+local function J0(x)
+  local s, t = 0, 1
+  for k = 1, 40 do s = s + t; t = -t * (x / 2) ^ 2 / (k * k) end
+  return s
+end
+local zeros = {{2.404825557695773, 0.5191474972894669}, {5.520078110286311, -0.3402648065731330},
+               {8.653727912911013, 0.2714522999283819}}
+local function disc_T(r, t)
+  local T = 1
+  for _, z in ipairs(zeros) do
+    T = T - 2 * J0(z[1] * r / 0.5) / (z[1] * z[2]) * math.exp(-z[1] ^ 2 * t / 0.25)
+  end
+  return T
+end
+do
+  local errs, dc = {}, {10, 20, 40}
+  for k, n in ipairs(dc) do
+    local sim = mvmpm.sim {domain = {x = {-0.75, 0.75}, y = {-0.75, 0.75}}, cell = 1 / n,
+                           shape = "gimp", sides = "free"}
+    sim:heat {}
+    local m = mvmpm.elastic {K = 1, G = 1, density = 1, cv = 1, k = 1}
+    sim:body {shape = mvmpm.disk {center = {0, 0}, radius = 0.5}, material = m, temperature = 0}
+    sim:body {shape = mvmpm.annulus {center = {0, 0}, inner = 0.5, outer = 0.7}, material = m,
+              hold_temperature = 1, overlap = "skip"}
+    sim:run(0.1)
+    local T, x, b = sim:particles("temperature"), sim:particles("position"), sim:particles("body")
+    local e2, np = 0, 0
+    for i = 1, #T do
+      if b[i] == 1 then
+        local d = T[i] - disc_T(math.sqrt(x.x[i] ^ 2 + x.y[i] ^ 2), 0.1)
+        e2 = e2 + d * d; np = np + 1
+      end
+    end
+    errs[k] = math.sqrt(e2 / np)
+    V.info(string.format("%d cells per unit: rms error over the disc", n), errs[k])
+    V.below(string.format("%d cells per unit: |heat residual| / heat in", n),
+            math.abs(sim:energy().heat_residual) / sim:energy().heat_boundary, 1e-12)
+  end
+  V.below("20 cells per unit (10 across the radius): rms error", errs[2], 0.03)
+  V.above("observed order", order(errs, dc), 1)
+end
+
 V.case "(h) threads: a frictional, plastic, conducting scene with 1 and 2 threads"
 local function th(n)
   local sim = mvmpm.sim {

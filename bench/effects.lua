@@ -5,7 +5,8 @@
 --     a bond strength on the body (no interface to bond), a plastic
 --     material whose yield stress is never reached
 --   at work: the block split in two bodies bonded along a line (contact,
---     bonds), a thermal ramp with alpha, a viscoelastic binder
+--     bonds), a thermal ramp with alpha, a viscoelastic binder, and the
+--     frictional split block with heat on (friction heat; and conduction)
 -- Ratios are t(case) / t(plain), all measured in this one run.
 local mvmpm = require "mvmpm"
 local B = dofile("bench/lib.lua")
@@ -17,6 +18,7 @@ local function block(opt)
   local h = 1 / CELLS
   local sim = mvmpm.sim {domain = {x = {-2 * h, 1 + 2 * h}, y = {-2 * h, 1 + 2 * h}},
                          cell = h, ppc = 2, sides = "free", t_end = 1e9}
+  if opt.heat then sim:heat {} end
   local m = opt.material or mvmpm.elastic(elastic)
   local v = function(x, y) return 0.01 * math.sin(2 * math.pi * y), 0 end
   if opt.split then
@@ -46,6 +48,10 @@ local cases = {
       {G = 0.1, tau = 1}}}}},
   {"at work: two bodies, frictional contact", {split = true}},
   {"at work: two bodies bonded", {split = true, bond = 1}},
+  {"at work: two bodies, friction heat (k = 0)", {split = true, heat = true,
+      material = mvmpm.elastic {K = 1, G = 0.5, density = 1, cv = 1}}},
+  {"at work: two bodies, friction heat, conduction", {split = true, heat = true,
+      material = mvmpm.elastic {K = 1, G = 0.5, density = 1, cv = 1, k = 1e-4}}},
 }
 -- the first timed scene of a process runs slow (page faults of fresh
 -- allocations, the clock ramping up): a plain block is timed once first

@@ -21,13 +21,14 @@
 */
 #include <math.h>
 #include <string.h>
+#include "heat.h"
 #include "sim.h"
 #include "stencil.h"
 
 /* one node (or slot) of mass m against side k; returns the impulse */
 static int wall_node(sim *s, side *sd, int d, double sign, double m,
                      double *const p0[DIM], double *const mom[DIM], size_t i,
-                     double gap, double *imp) {
+                     int slot, double gap, double *imp) {
   double dp[DIM], dn, tt = 0, w = 0, loss = 0;
   int e;
   for (e = 0; e < DIM; e++) {
@@ -57,6 +58,9 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
     if (e != d)
       loss -= 0.5 * (p0[e][i] + mom[e][i] + imp[e] - 2 * m * sd->v[e]) * imp[e];
   s->e.friction += loss / m;
+  if (s->heat)
+    heat_wall_friction(s, slot ? -1 : (int32_t)i, slot ? (int32_t)i : -1,
+                       loss / m);
   /* the normal impulse's likewise: an impact's loss at the node */
   s->e.impact -= 0.5 * (p0[d][i] + mom[d][i] + imp[d] - 2 * m * sd->v[d]) *
                  imp[d] / m;
@@ -85,13 +89,13 @@ static void wall_line(sim *s, int k, int line, int first) {
     if (g->m[n] <= s->mcut) continue;
     if (gap > 0 && !s->gap_step) continue;
     if (g->head[n] < 0) {
-      int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, gap, imp);
+      int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, 0, gap, imp);
       *act = (unsigned char)a;
       continue;
     }
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       if (g->sm[sl] <= s->mcut) continue;
-      if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, gap, imp) && act)
+      if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, 1, gap, imp) && act)
         *act = 1;
       for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
     }
@@ -336,7 +340,11 @@ static void patch_field(sim *s, int k, int j0, int len, int first, int last,
         if (dvn[e] == 0) continue;
         imp = m * dvn[e];
         /* dissipated, as wall_node books it */
-        if (e != d) loss -= 0.5 * (p0 + *q + imp - 2 * m * sd->v[e]) * dvn[e];
+        if (e != d) {
+          double l = -0.5 * (p0 + *q + imp - 2 * m * sd->v[e]) * dvn[e];
+          loss += l;
+          if (s->heat) heat_wall_friction(s, n, sl, l);
+        }
         *q += imp;
         if (sl >= 0) g->q[e][n] += imp;
         w += imp * sd->v[e];

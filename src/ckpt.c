@@ -21,6 +21,7 @@
 #include "ckpt.h"
 #include "lauxlib.h"
 #include "lsim.h"
+#include "heat.h"
 #include "lstate.h"
 #include "sandbox.h"
 #include "pcheck.h"
@@ -103,7 +104,8 @@ static long vfind(ckv *v, vlist *l, const char *name) {
 /* the numbers that may be infinite: a stop never due, sticking
 ** friction, a bond without a cap, a time never reached */
 static int may_be_inf(const char *name) {
-  static const char *const end[] = {"t_stop", "mu_default", "bond_default",
+  static const char *const end[] = {"t_stop", "t_ignition", "mu_default",
+                                    "bond_default",
                                     ".mu", ".bond", "_next", ".next", NULL};
   size_t n = strlen(name), k;
   int j;
@@ -222,12 +224,26 @@ static void visit_sim(ckv *v, sim *s) {
   /* newer than the format: a checkpoint without them settled nothing,
   ** and its potential's start is taken as where it was then */
   vreal_opt(v, "e.settled", &e->settled, 0);
+  vreal_opt(v, "e.chemical", &e->chemical, 0);
+  vreal_opt(v, "e.latent", &e->latent, 0);
+  vreal_opt(v, "t_ignition", &s->t_ignition, INFINITY);
   vreal_opt(v, "e.potential0", &e->potential0, e->potential);
   vvec(v, "e.", "mom", e->mom, DIM);
   vreal(v, "e.angmom", &e->angmom);
   vreal(v, "e.jmin", &e->jmin);
   vreal(v, "e.jmax", &e->jmax);
   VI(v, "e.nbadj", e->nbadj, size_t);
+  if (s->heat) { /* heat.h: the budget's heat terms and its origin */
+    vreal_opt(v, "e.heat_friction", &e->heat_friction, 0);
+    vreal_opt(v, "e.heat_plastic", &e->heat_plastic, 0);
+    vreal_opt(v, "e.heat_viscous", &e->heat_viscous, 0);
+    vreal_opt(v, "e.heat_source", &e->heat_source, 0);
+    vreal_opt(v, "e.heat_wall", &e->heat_wall, 0);
+    vreal_opt(v, "e.cold", &e->cold, 0);
+    vreal_opt(v, "e.heat_boundary", &e->heat_boundary, 0);
+    vreal_opt(v, "e.heat_thermal", &e->heat_thermal, 0);
+    vreal_opt(v, "heat.E0", &s->heat->E0, 0);
+  }
   for (k = 0; k < NSIDES; k++) {
     side *sd = &s->sides[k];
     snprintf(pre, sizeof pre, "side.%s.", side_names[k]);

@@ -46,6 +46,7 @@
 */
 #include <math.h>
 #include <stdlib.h>
+#include "heat.h"
 #include "sim.h"
 
 #define MAXSLOTS 64
@@ -553,6 +554,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       imp += lose(g, sl, vref, post, cn);
     }
     booked(s, k0, fric, cuts, imp, rec);
+    if (s->heat) heat_contact(s, slots, ns, drv, fric);
     return;
   }
   /* momentum-conserving: remove the residual in proportion to mass */
@@ -571,6 +573,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     imp += lose(g, sl, vref, post, cn);
   }
   booked(s, k0, fric, cuts, imp, rec);
+  if (s->heat) heat_contact(s, slots, ns, -1, fric);
 }
 
 /* Room for the records of a threaded pass, one per slot and per shared

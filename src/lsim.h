@@ -15,6 +15,7 @@
 #include "lua.h"
 #include "lauxlib.h"
 #include "out_csv.h"
+#include "diag_hotspot.h"
 #include "out_xdmf.h"
 #include "sim.h"
 
@@ -65,6 +66,11 @@ typedef struct lsim {
   int warned;
   double e_peak;          /* the largest kinetic + strain seen */
   char failed[1100];      /* the state written when a guard stopped the run */
+  /* sim:output{hotspots = }: the threshold and link of the per-snapshot
+  ** table and the diagnostics columns (lua_hotspot.c) */
+  int hs_on;
+  double hs_threshold, hs_link;
+  hotspots hs;            /* the regions of the last search, reused */
   int budgeted;           /* sim_budget_advice was printed */
 } lsim;
 
@@ -133,7 +139,16 @@ int lshape_inside(lua_State *L, int idx, const lshape *sh, const double *x);
 double lshape_area(const lshape *sh);   /* < 0 if not known */
 /* lua_thermal.c: sim:temperature(T | function(t)) */
 int lsim_temperature(lua_State *L);
+/* lua_hotspot.c: sim:hotspots{...}; the options table {threshold, link};
+** the diagnostics columns; the file beside snapshot k */
+int lsim_hotspots(lua_State *L);
+void lsim_hotspot_opts(lua_State *L, int idx, const char *what, double *T,
+                       double *link);
+void lsim_hotspot_row(lua_State *L, lsim *ls, double *count, double *frac);
+void lsim_hotspot_file(lua_State *L, lsim *ls, int k);
 double lsim_temperature_at(lua_State *L, int simidx, double t);
+/* lua_heat.c: sim:heat{...} */
+int lsim_heat(lua_State *L);
 /* lua_render.c: sim:render{...} and mvmpm.plot{...} */
 int lrender_sim(lua_State *L);
 void lrender_open(lua_State *L, int modidx);

@@ -14,6 +14,8 @@
 #include "interrupt.h"
 #include "lcheck.h"
 #include "lsim.h"
+#include "melt.h"
+#include "react.h"
 #include "thermal.h"
 
 /* a body whose simulation is open: its arrays are the body's memory */
@@ -333,16 +335,16 @@ static double near(const sim *s, int d, double r) {
 int lbody_new(lua_State *L) {
   static const char *const keys[] = {"name", "shape", "points", "material",
       "velocity", "angular_velocity", "field", "driven", "volume", "overlap",
-      "bond", "temperature", NULL};
+      "bond", "temperature", "hold_temperature", NULL};
   static const char *const vols[] = {"cell", "exact", NULL};
   static const char *const ovl[] = {"error", "skip", NULL};
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   seedbox *bx;
   size_t k;
-  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond, T0;
+  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond, T0, Th;
   size_t first;
-  int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0;
+  int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0, tfun;
   double blo[DIM], bhi[DIM];
   int32_t field;
   char name[32];
@@ -369,7 +371,24 @@ int lbody_new(lua_State *L) {
   lua_pop(L, 1);
   if (!vfun) chk_vec(L, 2, "body", "velocity", v0, DIM, 0);
   omega = chk_num(L, 2, "body", "angular_velocity", 0, -HUGE_VAL, HUGE_VAL, 0);
-  T0 = chk_num(L, 2, "body", "temperature", NAN, -HUGE_VAL, HUGE_VAL, 0);
+  lua_getfield(L, 2, "temperature");
+  tfun = lua_isfunction(L, -1);
+  lua_pop(L, 1);
+  T0 = tfun ? NAN : chk_num(L, 2, "body", "temperature", NAN, -HUGE_VAL, HUGE_VAL, 0);
+  Th = chk_num(L, 2, "body", "hold_temperature", NAN, -HUGE_VAL, HUGE_VAL, 0);
+  if (!isnan(Th) && !s->heat)
+    luaL_error(L, "body '%s': hold_temperature needs heat on (call sim:heat{} "
+                  "before adding the body)", name);
+  if (!isnan(Th) && (tfun || !isnan(T0)))
+    luaL_error(L, "body '%s': give temperature or hold_temperature, not both "
+                  "(a held body is at its temperature from the start)", name);
+  if (!isnan(Th)) T0 = Th;
+  lua_getfield(L, 2, "driven"); /* a driven body takes no heat */
+  if (s->heat && lua_isnil(L, -1) && !(s->mats[mi].cv > 0))
+    luaL_error(L, "body '%s': with heat on, its material '%s' needs a specific "
+                  "heat: give cv > 0 (per unit mass) in its constructor", name,
+               s->mats[mi].name);
+  lua_pop(L, 1);
   exact = chk_option(L, 2, "body", "volume", 0, vols);
   bond = chk_num(L, 2, "body", "bond", 0, 0, HUGE_VAL, 0);
   skip = chk_option(L, 2, "body", "overlap", 0, ovl);
@@ -469,8 +488,39 @@ int lbody_new(lua_State *L) {
   seedbox_free(bx); /* done with it: give the memory back now */
   drive_spec(L, ls, 1, b);
   /* initial temperature: the body's, else the scene's (thermal.h) */
-  if (!isnan(T0) && thermal_enable(s)) luaL_error(L, "body: out of memory");
+  if ((tfun || !isnan(T0)) && thermal_enable(s)) luaL_error(L, "body: out of memory");
   thermal_seed(s, first, s->ps.n, isnan(T0) ? NULL : &T0);
+  /* a reacting material: every particle starts unburnt (zero-filled) */
+  if (mi >= 0 && s->mats[mi].rx.Z > 0 && react_enable(s))
+    luaL_error(L, "body: %s", s->err);
+  /* the melting cap of friction heat needs heat on already */
+  if (mi >= 0 && s->mats[mi].T_melt > 0) {
+    if (!s->heat)
+      luaL_error(L, "body '%s': its material '%s' has T_melt, which caps "
+                    "friction heating: call sim:heat{} before adding the body",
+                 name, s->mats[mi].name);
+    if (melt_enable(s)) luaL_error(L, "body: %s", s->err);
+  }
+  if (tfun) { /* temperature = function(x, y) return T end */
+    double *T = particles_comp(&s->ps, s->ftemp, 0);
+    int fn;
+    lua_getfield(L, 2, "temperature");
+    fn = lua_gettop(L);
+    for (k = first; k < s->ps.n; k++) {
+      for (d = 0; d < DIM; d++) lua_pushnumber(L, s->ps.x[d][k]);
+      lua_pushvalue(L, fn);
+      lua_insert(L, -DIM - 1);
+      lua_call(L, DIM, 1);
+      T[k] = chk_result(L, -1, fn, "temperature of body '%s' at (%g, %g)",
+                        name, s->ps.x[0][k], s->ps.x[1][k]);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  if (!isnan(Th)) {
+    s->bodies[b].hold = 1;
+    s->bodies[b].T_hold = Th;
+  }
   (void)isrest;
   return lbody_push(L, 1, b);
 }

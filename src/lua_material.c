@@ -1,6 +1,9 @@
 /*
 ** lua_material.c - material constructors:
 **   mvmpm.elastic{K=, G= | E=, nu=, density=, alpha=, T_ref=, name=}
+** and, for heat (heat.h), on every model: cv= (specific heat per unit
+** mass; m.c is the wave speed), k= (conductivity), beta= (the fraction of
+** plastic work turned to heat, 0.9)
 **   mvmpm.plastic{K=, G= | E=, nu=, density=, yield=, hardening=0,
 **                 alpha=, T_ref=, name=}
 **   mvmpm.viscoelastic{K=, G_inf=0, prony = {{G=, tau=}, ...}, density=,
@@ -50,10 +53,58 @@ static const char *name_of(lua_State *L, const char *what) {
   return name;
 }
 
-/* alpha and T_ref, common to every model */
+/* the gas constant in J/(mol K) (CODATA 2018, exact) for Ea without R */
+#define GAS_R 8.314462618
+
+/* reaction = {Z =, Ta = | Ea = [, R = 8.314462618], Q =, order = 1,
+** fk = T0}: the kinetics of react.h; name, source and note are kept for
+** the reader of a parameter set and not used */
+static void reaction_keys(lua_State *L, const char *what, material *m) {
+  static const char *const keys[] = {"Z", "Ta", "Ea", "R", "Q", "order", "fk",
+                                     "name", "source", "note", NULL};
+  char rw[48];
+  int hasTa, hasEa, t = lua_getfield(L, 1, "reaction");
+  if (t == LUA_TNIL) { lua_pop(L, 1); return; }
+  snprintf(rw, sizeof rw, "%s.reaction", what);
+  if (t != LUA_TTABLE)
+    luaL_error(L, "%s: must be a table {Z =, Ta = (or Ea =), Q =, order = } "
+                  "(got %s)", rw, luaL_typename(L, -1));
+  chk_keys(L, -1, rw, keys);
+  m->rx.Z = chk_num(L, -1, rw, "Z", 0, 0, HUGE_VAL, CHK_OPENLO | CHK_REQUIRED);
+  lua_getfield(L, -1, "Ta"); hasTa = !lua_isnil(L, -1); lua_pop(L, 1);
+  lua_getfield(L, -1, "Ea"); hasEa = !lua_isnil(L, -1); lua_pop(L, 1);
+  if (hasTa == hasEa)
+    luaL_error(L, "%s: give the activation temperature Ta = E/R (K), or the "
+                  "activation energy Ea with R (default 8.314462618 "
+                  "J/(mol K)), not both", rw);
+  if (hasTa)
+    m->rx.Ta = chk_num(L, -1, rw, "Ta", 0, 0, HUGE_VAL, CHK_OPENLO);
+  else
+    m->rx.Ta = chk_num(L, -1, rw, "Ea", 0, 0, HUGE_VAL, CHK_OPENLO) /
+               chk_num(L, -1, rw, "R", GAS_R, 0, HUGE_VAL, CHK_OPENLO);
+  m->rx.Q = chk_num(L, -1, rw, "Q", 0, 0, HUGE_VAL, CHK_REQUIRED);
+  m->rx.n = chk_num(L, -1, rw, "order", 1, 0, 3, 0);
+  m->rx.T_fk = chk_num(L, -1, rw, "fk", 0, 0, HUGE_VAL, CHK_OPENLO);
+  if (!(m->cv > 0))
+    luaL_error(L, "%s: a reacting material needs its specific heat cv > 0 "
+                  "(the heat of reaction Q raises T by Q / cv)", what);
+  lua_pop(L, 1);
+}
+
+/* alpha and T_ref, and the heat keys (heat.h): specific heat cv > 0
+** (0 when absent: a scene with heat then refuses the material),
+** conductivity k >= 0, Taylor-Quinney fraction beta in [0, 1] (0.9) */
 static void thermal_keys(lua_State *L, const char *what, material *m) {
   m->alpha = chk_num(L, 1, what, "alpha", 0, -HUGE_VAL, HUGE_VAL, 0);
   m->T_ref = chk_num(L, 1, what, "T_ref", 0, -HUGE_VAL, HUGE_VAL, 0);
+  lua_getfield(L, 1, "cv");
+  if (!lua_isnil(L, -1))
+    m->cv = chk_num(L, 1, what, "cv", 0, 0, HUGE_VAL, CHK_OPENLO);
+  lua_pop(L, 1);
+  m->kcond = chk_num(L, 1, what, "k", 0, 0, HUGE_VAL, 0);
+  m->beta = chk_num(L, 1, what, "beta", 0.9, 0, 1, 0);
+  m->T_melt = chk_num(L, 1, what, "T_melt", 0, 0, HUGE_VAL, CHK_OPENLO);
+  reaction_keys(L, what, m);
 }
 
 static material *newmat(lua_State *L) {
@@ -64,7 +115,8 @@ static material *newmat(lua_State *L) {
 
 static int elastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
-                                     "alpha", "T_ref", NULL};
+                                     "alpha", "T_ref", "cv", "k", "beta",
+                                     "reaction", "T_melt", NULL};
   const char *what = "elastic";
   material tmp, *m;
   double K, G, rho;
@@ -85,7 +137,8 @@ static int elastic(lua_State *L) {
 static int plastic(lua_State *L) {
   static const char *const keys[] = {"K", "G", "E", "nu", "density", "name",
                                      "yield", "hardening", "alpha", "T_ref",
-                                     NULL};
+                                     "cv", "k", "beta", "reaction",
+                                     "T_melt", NULL};
   const char *what = "plastic";
   material tmp, *m;
   double K, G, rho, y, H;
@@ -136,7 +189,8 @@ static int prony(lua_State *L, const char *what, double *G, double *tau) {
 
 static int viscoelastic(lua_State *L) {
   static const char *const keys[] = {"K", "G_inf", "prony", "density", "name",
-                                     "alpha", "T_ref", NULL};
+                                     "alpha", "T_ref", "cv", "k", "beta",
+                                     "reaction", "T_melt", NULL};
   const char *what = "viscoelastic";
   material tmp, *m;
   double K, Ginf, rho, G[MAT_MAXPRONY], tau[MAT_MAXPRONY];
@@ -177,6 +231,9 @@ static int index_(lua_State *L) {
     lua_pushnumber(L, 9 * m->K * m->G / (3 * m->K + m->G));
   else if (strcmp(k, "alpha") == 0) lua_pushnumber(L, m->alpha);
   else if (strcmp(k, "T_ref") == 0) lua_pushnumber(L, m->T_ref);
+  else if (strcmp(k, "cv") == 0) lua_pushnumber(L, m->cv);
+  else if (strcmp(k, "k") == 0) lua_pushnumber(L, m->kcond);
+  else if (strcmp(k, "beta") == 0) lua_pushnumber(L, m->beta);
   else if (m->model == &mat_plastic && strcmp(k, "yield") == 0)
     lua_pushnumber(L, m->yield);
   else if (m->model == &mat_plastic && strcmp(k, "hardening") == 0)

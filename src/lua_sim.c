@@ -14,6 +14,7 @@
 #include "lcheck.h"
 #include "lsim.h"
 #include "lstate.h"
+#include "react.h"
 #include "sandbox.h"
 #include "shape.h"
 
@@ -414,6 +415,7 @@ static int lgc(lua_State *L) {
     ls->csv_open = 0;
     free(ls->occ);
     free(ls->snaps);
+    hotspots_free(&ls->hs);
     ls->occ = NULL;
     ls->snaps = NULL;
     ls->nsnap = ls->snapcap = 0;
@@ -500,10 +502,11 @@ static int lat_end(lua_State *L) {
 }
 
 /* sim:output{dir = "out/x", every = 0.5, csv_every = 1, checkpoint = 2,
-** warn_residual = 0.05} */
+** warn_residual = 0.05, hotspots = {threshold = T, link = 1.5}} */
 static int loutput(lua_State *L) {
   static const char *const keys[] = {"dir", "every", "csv_every",
-                                     "checkpoint", "warn_residual", NULL};
+                                     "checkpoint", "warn_residual",
+                                     "hotspots", NULL};
   lsim *ls = lsim_check(L, 1);
   char buf[1100];
   luaL_checktype(L, 2, LUA_TTABLE);
@@ -534,6 +537,12 @@ static int loutput(lua_State *L) {
     ls->warn_residual = chk_num(L, 2, "output", "warn_residual", 0, 0,
                                 HUGE_VAL, 0);
     ls->warn_given = 1;
+  }
+  lua_pop(L, 1);
+  if (lua_getfield(L, 2, "hotspots") != LUA_TNIL) {
+    lsim_hotspot_opts(L, lua_gettop(L), "output.hotspots", &ls->hs_threshold,
+                      &ls->hs_link);
+    ls->hs_on = 1;
   }
   lua_pop(L, 1);
   ls->out_enabled = 1;
@@ -674,6 +683,8 @@ static int lenergy(lua_State *L) {
   setnum(L, "boundary_work", s->e.boundary);
   setnum(L, "thermal_work", s->e.thermal);
   setnum(L, "settled", s->e.settled);
+  setnum(L, "chemical", s->e.chemical);
+  setnum(L, "latent", s->e.latent);
   setnum(L, "transfer", s->e.transfer);
   setnum(L, "impact", s->e.impact);
   setnum(L, "numerical", s->e.transfer + s->e.impact);
@@ -689,6 +700,18 @@ static int lenergy(lua_State *L) {
   setnum(L, "angmom", s->e.angmom);
   setnum(L, "jmin", s->e.jmin);
   setnum(L, "jmax", s->e.jmax);
+  if (s->heat) { /* heat.h */
+    setnum(L, "heat_friction", s->e.heat_friction);
+    setnum(L, "heat_plastic", s->e.heat_plastic);
+    setnum(L, "heat_viscous", s->e.heat_viscous);
+    setnum(L, "heat_source", s->e.heat_source);
+    setnum(L, "heat_wall", s->e.heat_wall);
+    setnum(L, "cold_work", s->e.cold);
+    setnum(L, "heat_boundary", s->e.heat_boundary);
+    setnum(L, "thermal_energy", s->e.heat_thermal);
+    setnum(L, "heat_residual", sim_heat_residual(s));
+    setnum(L, "residual_with_heat", sim_residual_all(s));
+  }
   return 1;
 }
 
@@ -879,6 +902,14 @@ static int lindex(lua_State *L) {
                                           : s->update == UPDATE_USAVG ? "usavg"
                                                                       : "usl");
   else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);
+  else if (strcmp(k, "ignition_time") == 0) {
+    if (s->t_ignition < INFINITY) lua_pushnumber(L, s->t_ignition);
+    else lua_pushnil(L);
+  }
+  else if (strcmp(k, "ignition") == 0) lua_pushnumber(L, s->react_ign);
+  else if (strcmp(k, "reaction_tol") == 0) lua_pushnumber(L, s->react_tol);
+  else if (strcmp(k, "reacted") == 0) lua_pushnumber(L, react_mean(s));
+  else if (strcmp(k, "reaction_substeps") == 0) lua_pushinteger(L, s->react_nsub);
   else if (strcmp(k, "transfer") == 0)
     lua_pushstring(L, s->transfer == TRANSFER_APIC ? "apic"
                       : s->transfer == TRANSFER_XPIC ? "xpic" : "flip");
@@ -886,7 +917,8 @@ static int lindex(lua_State *L) {
     static const char *const fields[] = {
         "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "cell",
         "flip", "cfl", "friction", "removed", "threads", "shared_nodes",
-        "memory", "outdir", "update", "shape", "transfer", NULL};
+        "memory", "outdir", "update", "shape", "transfer", "ignition_time",
+        "ignition", "reaction_tol", "reacted", "reaction_substeps", NULL};
     luaL_getmetafield(L, 1, "methods");
     if (lua_getfield(L, -1, k) == LUA_TNIL) chk_nokey(L, "sim", k, -2, fields);
   }
@@ -897,7 +929,8 @@ static int lindex(lua_State *L) {
 ** threads */
 static int lnewindex(lua_State *L) {
   static const char *const keys[] = {"flip", "cfl", "dt", "t_end", "friction",
-                                     "progress", "threads", NULL};
+                                     "progress", "threads", "ignition",
+                                     "reaction_tol", NULL};
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
   const char *k = luaL_checkstring(L, 2);
@@ -912,6 +945,10 @@ static int lnewindex(lua_State *L) {
   else if (strcmp(k, "t_end") == 0) s->t_end = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
   else if (strcmp(k, "friction") == 0) s->mu_default = friction(L, 4, "sim", s->mu_default);
   else if (strcmp(k, "progress") == 0) ls->progress = lua_toboolean(L, 3);
+  else if (strcmp(k, "ignition") == 0)
+    s->react_ign = chk_num(L, 4, "sim", k, 0.5, 0, 1, CHK_OPENLO);
+  else if (strcmp(k, "reaction_tol") == 0)
+    s->react_tol = chk_num(L, 4, "sim", k, REACT_TOL, 0, 1, CHK_OPENLO);
   else if (strcmp(k, "threads") == 0)
     sim_set_threads(s, (int)chk_num(L, 4, "sim", k, 1, 1, PAR_MAX, CHK_INT));
   /* a step made too small (or an end too far) while running: refused
@@ -939,6 +976,8 @@ void lsim_open(lua_State *L) {
       {"energy", lenergy}, {"bodies", lbodies}, {"snapshot", lsnapshot},
       {"particles", lparticles}, {"stable_dt", lstable_dt},
       {"temperature", lsim_temperature}, {"render", lrender_sim},
+      {"hotspots", lsim_hotspots},
+      {"heat", lsim_heat},
       {"wall_force", lwall_force}, {"overlap", loverlap},
       {"contacts", lcontacts}, {"state", lstate},
       {"settle", lsettle}, {"at_end", lat_end},

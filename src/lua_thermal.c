@@ -38,6 +38,11 @@ int lsim_temperature(lua_State *L) {
     return 1;
   }
   lua_settop(L, 2);
+  if (s->heat && (s->started || lua_isfunction(L, 2)))
+    luaL_error(L, "temperature: with heat on (sim:heat) the temperature is "
+                  "computed; sim:temperature(T) before the first step sets "
+                  "the initial temperature only (use walls or "
+                  "hold_temperature to impose one)");
   lua_getiuservalue(L, 1, 1);
   if (lua_isfunction(L, 2)) {
     lua_pushvalue(L, 2);

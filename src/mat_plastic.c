@@ -39,7 +39,9 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   const double y0 = m->yield, H = m->hardening, g3h = 3.0 * G + H;
   double *ep = particles_comp(ps, m->field[F_EP], 0);
   double *wp = particles_comp(ps, m->field[F_WP], 0);
+  double *hq = m->fheat >= 0 ? particles_comp(ps, m->fheat, 0) : NULL;
   double s[NSTRESS], D[NSTRESS], d[NSTRESS], strain = 0, power = 0, plastic = 0;
+  double heat = 0;
   size_t i;
   for (i = i0; i < i1; i++) {
     double J, p, q, qy;
@@ -58,6 +60,11 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
       ep[i] += dep;
       wp[i] += w;
       plastic += ps->vol0[i] * w;
+      if (hq) { /* heat.h: beta of the work heats the particle */
+        double hw = m->beta * ps->vol0[i] * w;
+        hq[i] += hw;
+        heat += hw;
+      }
     }
     mat_put(ps, i, s);
     mat_sum_j(sum, J);
@@ -67,6 +74,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   sum->strain += strain;
   sum->power += power;
   sum->plastic += plastic;
+  sum->heat += heat;
 }
 
 /* the stored energy is the elastic part of the stress only */

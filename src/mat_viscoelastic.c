@@ -71,6 +71,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
       k3[MAT_MAXPRONY];
   double *a[MAT_MAXPRONY][3];
   double *vw = particles_comp(ps, m->field[F_VW], 0);
+  double *hq = m->fheat >= 0 ? particles_comp(ps, m->fheat, 0) : NULL;
   double s[NSTRESS], D[NSTRESS], d[NSTRESS], strain = 0, power = 0, visc = 0;
   size_t i;
   int k, c;
@@ -123,6 +124,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
 #endif
     vw[i] += w;
     visc += ps->vol0[i] * w;
+    if (hq) hq[i] += ps->vol0[i] * w; /* heat.h: all of it is heat */
     mat_put(ps, i, s);
     mat_sum_j(sum, J);
     {

@@ -8,6 +8,8 @@
 int material_init(material *m, const mat_model *model, const char *name,
                   double rho, double K, double G) {
   memset(m, 0, sizeof *m);
+  m->fheat = -1;
+  m->beta = 0.9;
   m->model = model;
   strncpy(m->name, name ? name : model->name, sizeof m->name - 1);
   if (!(rho > 0) || !(K > 0) || !(G > 0)) return -1;
@@ -16,6 +18,8 @@ int material_init(material *m, const mat_model *model, const char *name,
   m->G = G;
   m->lambda = K - 2.0 * G / 3.0;
   m->c = sqrt((K + 4.0 * G / 3.0) / rho);
+  m->beta = 0.9; /* Taylor-Quinney: the common default for metals */
+  m->fheat = -1;
   return 0;
 }
 

@@ -22,6 +22,16 @@
 
 typedef struct material material;
 
+/* single-step Arrhenius kinetics (react.h); Z = 0: the material does not
+** react */
+typedef struct react_law {
+  double Z;      /* pre-exponential factor, 1/T */
+  double Ta;     /* activation temperature E / R, K */
+  double Q;      /* heat of reaction per unit mass (> 0 exothermic) */
+  double n;      /* order in (1 - lambda), 0 .. 3 */
+  double T_fk;   /* > 0: Frank-Kamenetskii's exponent about this T */
+} react_law;
+
 #define MAT_MAXPRONY 8             /* Maxwell elements of one material */
 #define MAT_MAXFIELDS (MAT_MAXPRONY + 2)
 
@@ -33,6 +43,8 @@ typedef struct mat_sums {
   size_t nbadj;    /* particles with det F <= 0 */
   double plastic;  /* plastic work of this step */
   double viscous;  /* viscous dissipation of this step */
+  double heat;     /* plastic work of this step turned to heat (beta W_p;
+                      scenes with heat only, heat.h) */
 } mat_sums;
 
 typedef struct mat_model {
@@ -59,6 +71,10 @@ struct material {
   ** material and the temperature at which the seeded shape is stress
   ** free; alpha = 0 keeps the material out of the thermal phase */
   double alpha, T_ref;
+  /* reaction (react.c) */
+  react_law rx;
+  /* > 0: friction heat does not raise T above it (melt.h) */
+  double T_melt;
   /* elastic-plastic (mat_plastic.c): initial yield stress (von Mises,
   ** equivalent stress) and linear isotropic hardening modulus */
   double yield, hardening;
@@ -67,6 +83,13 @@ struct material {
   double G_inf;
   int nprony;
   double prony_G[MAT_MAXPRONY], prony_tau[MAT_MAXPRONY];
+  /* heat (heat.h, conduct.h): specific heat per unit mass (0: not
+  ** given; a scene with heat needs it > 0), thermal conductivity, and the
+  ** Taylor-Quinney fraction of plastic work that becomes heat */
+  double cv, kcond, beta;
+  /* the particle field the models add each step's heat to (J): set by
+  ** the simulation, -1 in a scene without heat */
+  int fheat;
   /* per-particle state fields the model registered (indices into the
   ** particle field table, set by setup) */
   int field[MAT_MAXFIELDS];

@@ -6,12 +6,14 @@
 #include <math.h>
 #include <stdio.h>
 #include "prof.h"
+#include "heat.h"
 #include "sim.h"
 
 const char *const prof_names[PROF_N] = {
     "p2g (incl. grid reset, marking)", "grid solve",
     "contact (normals, reach, bonds)", "sides, driven bodies", "g2p",
-    "MUSL remap", "constitutive (incl. thermal)", "housekeeping (dt, sort)",
+    "MUSL remap", "constitutive (incl. thermal)",
+    "heat (friction heat, conduction, T)", "housekeeping (dt, sort)",
     "drives, diagnostics, callbacks", "output (snapshots, progress)"};
 
 static void effect(FILE *f, const char *name, int on, const char *how) {
@@ -46,8 +48,23 @@ void prof_effects(FILE *f, const sim *s) {
   effect(f, "plasticity", plastic, NULL);
   effect(f, "viscosity", visc, "Maxwell elements");
   effect(f, "temperature", s->ftemp >= 0,
-         s->temp_on ? (alpha ? "imposed, thermal strain" : "imposed, no alpha")
-                    : "field only");
+         s->heat ? (alpha ? "computed (heat), thermal strain"
+                          : "computed (heat), no alpha")
+         : s->temp_on ? (alpha ? "imposed, thermal strain" : "imposed, no alpha")
+                      : "field only");
+  if (s->heat) {
+    const heat_state *h = s->heat;
+    snprintf(buf, sizeof buf, "friction split %s, wall friction %g to the "
+             "material", h->split == HEAT_SPLIT_EFFUSIVITY ? "by effusivity"
+             : "by share", h->wall_share);
+    effect(f, "heat", 1, buf);
+    snprintf(buf, sizeof buf, "%s contact, %zu substep(s) in the last step",
+             h->contact == HEAT_PERFECT ? "perfect" : "conductance", h->nsub);
+    effect(f, "conduction", h->conduct, buf);
+  } else {
+    effect(f, "heat", 0, NULL);
+    effect(f, "conduction", 0, NULL);
+  }
   snprintf(buf, sizeof buf, "%d", s->ndriven);
   effect(f, "driven bodies", s->ndriven > 0, buf);
   snprintf(buf, sizeof buf, "%d wall sides%s", walls,

@@ -19,6 +19,7 @@ enum prof_phase {
   PROF_G2P,      /* grid to particles */
   PROF_REMAP,    /* MUSL remap and second pass */
   PROF_CONST,    /* constitutive update, thermal phase */
+  PROF_HEAT,     /* heat: friction heat, conduction, temperature update */
   PROF_HOUSE,    /* time step, removal of lost particles, sort */
   PROF_DIAG,     /* Lua drives, CSV row, callbacks */
   PROF_OUTPUT,   /* snapshots, progress, checkpoints */

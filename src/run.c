@@ -20,6 +20,7 @@
 #include "lsim.h"
 #include "out_h5.h"
 #include "prof.h"
+#include "react.h"
 #include "sandbox.h"
 #include "version.h"
 
@@ -51,7 +52,8 @@ int run_mkdirs(const char *path, char *err, size_t errlen) {
 /* the names a run writes in its directory (and their .tmp/.part while
 ** being written): what --overwrite removes, and nothing else */
 static int run_output_name(const char *n) {
-  static const char *const pre[] = {"particles_", "checkpoint_", "failed_"};
+  static const char *const pre[] = {"particles_", "checkpoint_", "failed_",
+                                    "hotspots_"};
   char rest[32];
   size_t k, len;
   int d;
@@ -67,6 +69,8 @@ static int run_output_name(const char *n) {
     if (d < 6) continue;
     snprintf(rest, sizeof rest, "%s", n + len + 6);
     if (strcmp(rest, ".h5") == 0 || strcmp(rest, ".h5.tmp") == 0) return 1;
+    if (k == 3 && (strcmp(rest, ".csv") == 0 || strcmp(rest, ".csv.tmp") == 0))
+      return 1;
   }
   return 0;
 }
@@ -115,12 +119,24 @@ static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
     "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
     "debonded", "bonded_area", "potential", "lag", "settled", "initial",
-    "scale", "transfer", "impact"};
-#define NCOLS (int)(sizeof cols / sizeof cols[0])
+    "scale", "transfer", "impact",
+    /* the reaction's heat and burn, the first ignition and the hot spots
+    ** of sim:output{hotspots =} (react.h, lua_hotspot.c) */
+    "chemical", "reacted", "ignition_time", "hotspots",
+    "hotspot_area_fraction",
+    /* scenes with heat only (heat.h): the heat the sources put in, what
+    ** walls and held bodies exchanged, the thermal energy the particles
+    ** hold, and the two residuals */
+    "heat_friction", "heat_plastic", "heat_viscous", "heat_source",
+    "heat_wall", "cold_work", "heat_boundary", "thermal_energy",
+    "heat_residual", "residual_with_heat"};
+#define NCOLS_ALL (int)(sizeof cols / sizeof cols[0])
+#define NCOLS_HEAT 10
+#define NCOLS (ls->s.heat ? NCOLS_ALL : NCOLS_ALL - NCOLS_HEAT)
 
 static void csv_row(lua_State *L, lsim *ls) {
   sim *s = &ls->s;
-  double v[NCOLS], tot = sim_total(s);
+  double v[NCOLS_ALL], tot = sim_total(s);
   char err[256];
   v[0] = (double)s->step; v[1] = s->t; v[2] = s->dt;
   v[3] = s->e.kinetic; v[4] = s->e.strain; v[5] = s->e.friction;
@@ -133,6 +149,17 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;
   v[23] = s->e.initial; v[24] = sim_scale(s);
   v[25] = s->e.transfer; v[26] = s->e.impact;
+  /* the reaction's heat and burn; the first ignition (-1 before) */
+  v[27] = s->e.chemical; v[28] = react_mean(s);
+  v[29] = s->t_ignition < INFINITY ? s->t_ignition : -1;
+  lsim_hotspot_row(L, ls, &v[30], &v[31]);
+  if (s->heat) {
+    v[32] = s->e.heat_friction; v[33] = s->e.heat_plastic;
+    v[34] = s->e.heat_viscous; v[35] = s->e.heat_source;
+    v[36] = s->e.heat_wall; v[37] = s->e.cold; v[38] = s->e.heat_boundary;
+    v[39] = s->e.heat_thermal; v[40] = sim_heat_residual(s);
+    v[41] = sim_residual_all(s);
+  }
   if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
 }
 
@@ -245,6 +272,7 @@ static void snapshot(lua_State *L, lsim *ls) {
   snprintf(path, sizeof path, "%s/%s", ls->outdir, name);
   sandbox_file(L, path, "output");
   run_snapshot(L, ls, path);
+  lsim_hotspot_file(L, ls, ls->nsnap);
   if (ls->nsnap == ls->snapcap) {
     int cap = ls->snapcap ? 2 * ls->snapcap : 64;
     void *p = realloc(ls->snaps, cap * sizeof *ls->snaps);

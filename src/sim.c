@@ -6,7 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "heat.h"
 #include "prof.h"
+#include "react.h"
 #include "shape.h"
 #include "sim.h"
 #include "thermal.h"
@@ -32,6 +34,11 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->ppc = ppc;
   s->lp = 0.5 / ppc;
   s->ftemp = -1;
+  s->freact = -1;
+  s->fmelt = -1;
+  s->react_tol = REACT_TOL;
+  s->react_ign = 0.5;
+  s->t_ignition = INFINITY;
   s->threads = 1;
   particles_init(&s->ps);
   if (grid_init(&s->g, lo, hi, h, periodic, shape_pad(shape)) ||
@@ -75,6 +82,7 @@ void sim_free(sim *s) {
   free(s->crec);
   free(s->cbody);
   free(s->prof);
+  heat_free(s);
   memset(s, 0, sizeof *s);
 }
 
@@ -133,6 +141,7 @@ int sim_add_material(sim *s, const material *m) {
   }
   s->mats[s->nmat] = *m;
   s->mats[s->nmat].id = s->nmat;
+  s->mats[s->nmat].fheat = s->heat ? s->heat->fq : -1;
   if (m->model->setup && m->model->setup(&s->mats[s->nmat], &s->ps)) {
     snprintf(s->err, sizeof s->err, "material %s: cannot set up its state",
              m->name);
@@ -417,7 +426,7 @@ static void constitutive_part(void *arg, int t, int nparts) {
   int k;
   par_chunks(n, t, nparts, &c0, &c1);
   for (c = c0; c < c1; c++) {
-    mat_sums z = {0, 0, 1e300, -1e300, 0, 0, 0};
+    mat_sums z = {0, 0, 1e300, -1e300, 0, 0, 0, 0};
     red[c] = z;
     par_chunk(n, c, &i0, &i1);
     for (k = 0; k < s->nmat; k++)
@@ -429,7 +438,7 @@ static void constitutive_part(void *arg, int t, int nparts) {
 _Static_assert(sizeof(mat_sums) <= SIM_RED_BYTES, "mat_sums fit SIM_RED_BYTES");
 
 int constitutive(sim *s, double dt) {
-  mat_sums sum = {0, 0, 1e300, -1e300, 0, 0, 0};
+  mat_sums sum = {0, 0, 1e300, -1e300, 0, 0, 0, 0};
   const mat_sums *red = s->red;
   size_t c, nc = par_nchunks(s->ps.n);
   cjob j = {s, dt};
@@ -440,6 +449,7 @@ int constitutive(sim *s, double dt) {
     sum.power += red[c].power;
     sum.plastic += red[c].plastic;
     sum.viscous += red[c].viscous;
+    sum.heat += red[c].heat;
     sum.nbadj += red[c].nbadj;
     if (red[c].jmin < sum.jmin) sum.jmin = red[c].jmin;
     if (red[c].jmax > sum.jmax) sum.jmax = red[c].jmax;
@@ -447,6 +457,11 @@ int constitutive(sim *s, double dt) {
   s->e.strain = sum.strain;
   s->e.plastic += sum.plastic;
   s->e.viscous += sum.viscous;
+  if (s->heat) {
+    s->e.heat_plastic += sum.heat;
+    s->e.cold += sum.plastic - sum.heat;
+    s->e.heat_viscous += sum.viscous;
+  }
   /* USAVG's stresses are those of the step's end, as the velocities */
   s->e.lag = s->update == UPDATE_USAVG ? 0 : -0.5 * dt * sum.power;
   if (sum.jmin <= sum.jmax) { s->e.jmin = sum.jmin; s->e.jmax = sum.jmax; }
@@ -520,6 +535,7 @@ static void reset_part(void *arg, int t, int nparts) {
 int sim_step(sim *s) {
   int musl = s->update != UPDATE_USL, usavg = s->update == UPDATE_USAVG;
   if (sim_prepare(s)) return -1;
+  if (s->heat && !s->heat->ready && heat_start(s)) return -1;
   if (!s->started) {
     /* once, at the first step: bodies are all added */
     if (s->ftemp >= 0) thermal_prestress(s);
@@ -537,6 +553,7 @@ int sim_step(sim *s) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
   }
+  if (s->heat && heat_prepare(s)) return -1;
   p2g(s);
   if (usavg && usf(s)) return -1;
   prof_mark(s->prof, PROF_P2G);
@@ -554,6 +571,10 @@ int sim_step(sim *s) {
   prof_mark(s->prof, PROF_CONTACT);
   boundary_apply(s);
   prof_mark(s->prof, PROF_SIDES);
+  if (s->heat) {
+    if (heat_grid(s)) return -1;
+    prof_mark(s->prof, PROF_HEAT);
+  }
   solve_velocity(s);
   if (s->transfer == TRANSFER_XPIC) xpic(s);
   prof_mark(s->prof, PROF_SOLVE);
@@ -571,7 +592,14 @@ int sim_step(sim *s) {
   }
   if (s->temp_on) thermal(s);
   if (constitutive(s, usavg ? 0.5 * s->dt : s->dt)) return -1;
+  /* after every other source of heat of the step */
+  if (s->fmelt >= 0) melt(s);
+  if (s->react_on) react(s);
   prof_mark(s->prof, PROF_CONST);
+  if (s->heat) {
+    heat_update(s);
+    prof_mark(s->prof, PROF_HEAT);
+  }
   s->t += s->dt;
   s->step++;
   housekeeping(s);

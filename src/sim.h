@@ -66,6 +66,9 @@ typedef struct body {
   int driven;
   double vdrive[DIM];
   double force[DIM]; /* driven: force it put on the other bodies, last step */
+  int hold;          /* heat (heat.h): its particles are held at T_hold, a
+                        reservoir */
+  double T_hold;
 } body;
 
 /* a contact law between two fields: friction, and the most their
@@ -85,10 +88,22 @@ typedef struct sim_energy {
   double thermal;    /* work of the thermal strain on the stress (thermal.c):
                      ** what heating or cooling adds to the strain energy */
   double settled;    /* kinetic energy taken out by sim_stop (settling) */
+  double chemical;   /* heat the reaction released, sum m Q d lambda
+                     ** (react.c): an input to the heat, not to the
+                     ** mechanical budget */
   double transfer;   /* kinetic energy the transfer itself took from the
                      ** particles, against FLIP's increment (g2p.c) */
   double impact;     /* what the normal impulses of contact and walls
                      ** dissipate: impacts are inelastic at a node */
+  /* heat (heat.h), in scenes with heat only: what the sources put into
+  ** the particles (friction, beta x plastic, viscous, heat_add's), what
+  ** wall friction gave the walls, the cold work (1 - beta) x plastic,
+  ** what came in through walls and held bodies (conduct.c), and the
+  ** thermal energy sum m c (T - T0) the particles hold */
+  double heat_friction, heat_plastic, heat_viscous, heat_source;
+  double heat_wall, cold, heat_boundary, heat_thermal;
+  double latent;     /* friction heat the melting cap took (melt.h): heat
+                     ** that left the particles' temperature */
   double initial;    /* kinetic + strain + potential before the first step */
   double potential0; /* potential before the first step */
   double mom[DIM];
@@ -146,7 +161,16 @@ typedef struct sim {
   sim_energy e;
   int ftemp;         /* particle field "temperature", -1 if no scene uses it */
   int temp_on;       /* a uniform temperature is imposed (thermal.c) */
+  struct heat_state *heat; /* heat.h: NULL in a scene without heat */
   double temp;       /* ... its value at the end of the next step */
+  int freact;        /* particle field "reacted", -1 if nothing reacts */
+  int react_on;      /* some material reacts: the reaction phase runs */
+  double react_tol;  /* largest change of Ta / T over a substep (react.h) */
+  double react_ign;  /* the reacted fraction that counts as ignition */
+  double t_ignition; /* when a particle first passed it; INFINITY before */
+  int react_nsub;    /* most substeps one particle took, last step */
+  int fmelt;         /* melt.h: friction heat already seen, -1 if no
+                     ** material caps friction heating at T_melt */
   double vmax;       /* fastest particle of the last step */
   size_t nout;       /* particles outside the domain after the last move */
   double mcut_rel;   /* mcut as a fraction of the lightest particle */
@@ -227,6 +251,15 @@ double sim_total(const sim *s);
 ** plastic - viscous - transfer - total; zero up to the error of the
 ** step */
 double sim_residual(const sim *s);
+/* with heat (heat.h): the heat the budget booked into the particles
+** (sources + walls and held bodies) less the thermal energy they hold,
+** sum m c (T - T0); zero up to round-off when conduction conserves */
+double sim_heat_residual(const sim *s);
+/* the budget of mechanical and thermal energy together: initial +
+** boundary + thermal work + heat_source + heat_boundary - total -
+** thermal energy - cold work - heat_wall - settled - transfer - impact;
+** sim_residual when heat is off */
+double sim_residual_all(const sim *s);
 /* the budget's scale, which no choice of origin changes (the potential's
 ** own value does): the kinetic and strain energy at the start plus the
 ** size of every flow since, |boundary| + |thermal| + |potential change|
@@ -279,6 +312,8 @@ double g2p_affine_energy(const sim *s); /* g2p.c: APIC's affine field's
 int constitutive(sim *s, double dt); /* sim.c: each material's update
                                   over dt */
 void thermal(sim *s);          /* thermal.c: temperature -> eigenstress */
+void react(sim *s);            /* react.c: reaction and its heat */
+void melt(sim *s);             /* melt.c: friction heat capped at T_melt */
 /* a warning when the transfer's losses are large against the friction
 ** work booked, or NULL (sim.c) */
 const char *sim_budget_advice(const sim *s);

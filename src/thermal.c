@@ -42,7 +42,7 @@ int thermal_uniform(sim *s, double T) {
 
 /* add -3 K alpha dT to the normal stresses of particle i; the work of
 ** the increment at its mean stress */
-static double heat(const material *m, particles *ps, size_t i, double dT) {
+double thermal_strain(const material *m, particles *ps, size_t i, double dT) {
   double ds = -3.0 * m->K * m->alpha * dT;
   double tr = ps->s[S_XX][i] + ps->s[S_YY][i] + ps->s[S_ZZ][i];
   ps->s[S_XX][i] += ds;
@@ -58,7 +58,7 @@ void thermal_prestress(sim *s) {
   for (i = 0; i < ps->n; i++) {
     int32_t mi = s->bmat[ps->body[i]];
     if (mi < 0 || s->mats[mi].alpha == 0 || T[i] == s->mats[mi].T_ref) continue;
-    heat(&s->mats[mi], ps, i, T[i] - s->mats[mi].T_ref);
+    thermal_strain(&s->mats[mi], ps, i, T[i] - s->mats[mi].T_ref);
   }
 }
 
@@ -78,7 +78,7 @@ static void thermal_part(void *arg, int t, int nparts) {
       double dT = Tn - T[i];
       T[i] = Tn;
       if (mi < 0 || s->mats[mi].alpha == 0 || dT == 0) continue;
-      work += heat(&s->mats[mi], ps, i, dT);
+      work += thermal_strain(&s->mats[mi], ps, i, dT);
     }
     red[c] = work;
   }

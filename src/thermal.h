@@ -38,6 +38,10 @@ void thermal_seed(sim *s, size_t from, size_t to, const double *T0);
 /* impose a uniform temperature from now on; before the first step it is
 ** also every particle's initial temperature */
 int thermal_uniform(sim *s, double T);
+/* the thermal strain of a change dT of particle i (material m): the
+** stress increment -3 K alpha dT I; returns the work it adds to the
+** strain energy (heat.c's temperature update) */
+double thermal_strain(const material *m, particles *ps, size_t i, double dT);
 /* before the first step: the stress of particles not at T_ref */
 void thermal_prestress(sim *s);
 

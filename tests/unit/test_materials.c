@@ -37,7 +37,7 @@ static void one_init(one *o, const material *m) {
 /* one step with velocity gradient (L00, L01, L10, L11) */
 static void one_step(one *o, double L00, double L01, double L10, double L11,
                      double dt) {
-  mat_sums s = {0, 0, 1e300, -1e300, 0, 0, 0};
+  mat_sums s = {0, 0, 1e300, -1e300, 0, 0, 0, 0};
   o->ps.L[0][0] = L00; o->ps.L[1][0] = L01;
   o->ps.L[2][0] = L10; o->ps.L[3][0] = L11;
   o->m.model->update(&o->m, &o->ps, o->bmat, 0, dt, 0, o->ps.n, &s);

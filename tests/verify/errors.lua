@@ -108,6 +108,13 @@ local rules = {
     sim0 .. 'local b = s:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. '}\n' ..
     'local c = b:centriod()\nreturn s',
     4, {"body has no field or function 'centriod'", "did you mean 'centroid'"}},
+  {"Taylor-Quinney fraction in [0, 1]", 'local m = mvmpm.plastic {K = 1, G = 1, density = 1, yield = 1, beta = 1.5}',
+    2, {"'beta'", "%[0, 1%]", "got 1.5"}},
+  {"a heat scene's material without a specific heat", sim0 .. 's:heat {}\n' ..
+    's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. '}',
+    4, {"body 'body1'", "cv > 0"}},
+  {"a heat side given two conditions", sim0 .. 's:heat {sides = {left = {temperature = 1, h = 2, ambient = 0}}}',
+    3, {"heat.sides.left", "either temperature", "h and ambient"}},
   {"APIC needs GIMP or B-splines", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, transfer = "apic"}',
     2, {"transfer = \"apic\"", "gimp", "bspline2"}},
 }

@@ -59,6 +59,18 @@ local P = mvmpm.params {
   normals = "mass",    -- contact normals: "volume", "maxvolume", "plane"
   normal_window = 0,   -- ... from the shared nodes within this many cells
   contact_gap = "touch", -- or "step": contact judged at the step's end
+  -- heat (off by default: the scene is then the same, bit for bit).  SI.
+  -- HMX: cv and k of PBX 9501's reactant in mvmpm.kinetics (996 J/(kg K),
+  -- 0.452 W/(m K), from the Uintah input cited there); beta 0.9, the
+  -- Taylor-Quinney value commonly taken.  Binder: 1500 J/(kg K) and
+  -- 0.15 W/(m K), round values typical of polyurethane elastomers such as
+  -- Estane (not measured data for PBX 9501's binder; docs/hotspots.md).
+  heat = false,
+  T0 = 300,            -- initial temperature, K
+  hmx_cv = 996, hmx_k = 0.452, hmx_beta = 0.9,
+  binder_cv = 1500, binder_k = 0.15, binder_beta = 0.9,
+  friction_split = 0.5, -- heat's friction_split
+  hotspot_threshold = 400, -- K: hot spots in the snapshots' CSVs and the reports
 }
 
 local function check(ok, what)
@@ -117,7 +129,13 @@ local sim = mvmpm.sim {
   contact_gap = P.contact_gap,
 }
 
-local hmx = M.hmx {name = "HMX"}
+local hot = P.heat == true or P.heat == "true"
+if hot then
+  sim:heat {friction_split = P.friction_split}
+  sim:temperature(P.T0)
+end
+local hmx = M.hmx {name = "HMX", cv = hot and P.hmx_cv or nil, k = hot and P.hmx_k or nil,
+                   beta = hot and P.hmx_beta or nil}
 local grains, left, right = {}, {}, {}
 local bond = P.binder and P.bond > 0 and P.bond or nil
 for i, g in ipairs(bed.grains) do
@@ -135,6 +153,7 @@ end
 local binder
 if P.binder then
   local over = {name = "binder", density = st.dirty_binder_density}
+  if hot then over.cv, over.k, over.beta = P.binder_cv, P.binder_k, P.binder_beta end
   local mat = P.binder_set == "composite" and M.pbx9501_composite(over)
               or M.binder_placeholder(over)
   binder = sim:body {name = "binder", shape = mvmpm.rest(), material = mat, bond = bond}
@@ -167,7 +186,7 @@ local hist, area0, written = nil, nil, false
 local next_image = 0
 local mon = {strain = {}, tau = {}, debond = {}, work = {}, kinetic = {}, stored = {},
              friction = {}, plastic = {}, viscous = {}, residual = {}, bad = {},
-             max_depth = 0, jmin = math.huge, max_residual = 0}
+             max_depth = 0, jmin = math.huge, max_residual = 0, hot = {}}
 local acc, nacc, reported = 0, 0, false
 
 -- at each record: the invariants (no NaN, det F > 0, no particle
@@ -192,6 +211,67 @@ local function sample(s, e, g, tau)
   if g > 2 * P.ramp and e.boundary_work > 0 then
     mon.max_residual = math.max(mon.max_residual, math.abs(e.residual) / e.boundary_work)
   end
+end
+
+-- with heat, at the end: hot spots against strain, the last state's hot
+-- spots over HMX's critical curve, where the heat is (sources; grains
+-- or binder; friction's share in the hot particles) -> summary lines
+local function heat_report(dir)
+  local H = require "mvmpm.hotspot"
+  local K = require "mvmpm.kinetics"
+  local gs, cs, as = {}, {}, {}
+  local f = assert(mvmpm.open(dir .. "/pbx_hotspots.csv"))
+  f:write("strain,hotspots,area_fraction,heat_friction,heat_plastic,heat_viscous,"
+          .. "residual_with_heat,boundary_work\n")
+  for k, h in ipairs(mon.hot) do
+    gs[k], cs[k], as[k] = h.strain, h.count, h.area_fraction
+    f:write(string.format("%.6g,%d,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g\n", h.strain, h.count,
+      h.area_fraction, h.heat_friction, h.heat_plastic, h.heat_viscous, h.residual_with_heat,
+      h.work))
+  end
+  assert(f:close())
+  mvmpm.plot {file = dir .. "/pbx_hotspots_strain.png", xlabel = "nominal shear strain",
+              ylabel = "count", title = string.format("Hot spots above %g K", P.hotspot_threshold),
+              series = {{x = gs, y = cs, label = "hot spots"}}}
+  mvmpm.plot {file = dir .. "/pbx_hotspot_area_strain.png", xlabel = "nominal shear strain",
+              ylabel = "area fraction", title = string.format("Area above %g K", P.hotspot_threshold),
+              series = {{x = gs, y = as, label = "hot area fraction"}}}
+  local last = mon.hot[#mon.hot]
+  H.plot {file = dir .. "/pbx_hotspots_critical.png", spots = last and last.spots or {},
+          kinetics = K.hmx, density = M.HMX.density, conductivity = P.hmx_k, rmin = 1e-7, rmax = 1e-3,
+          title = string.format("hot spots at strain %.2f over HMX's critical curve",
+                                last and last.strain or 0)}
+  local e = sim:energy()
+  local T, m, q, qf, body = sim:particles("temperature"), sim:particles("mass"),
+    sim:particles("heat"), sim:particles("heat_friction"), sim:particles("body")
+  local bid = binder and binder.id or -1
+  local eb, eg, nhot, nbind, nfric = 0, 0, 0, 0, 0
+  for i = 1, #T do
+    local c = body[i] == bid and P.binder_cv or P.hmx_cv
+    local th = m[i] * c * (T[i] - P.T0)
+    if body[i] == bid then eb = eb + th else eg = eg + th end
+    if T[i] > P.hotspot_threshold then
+      nhot = nhot + 1
+      if body[i] == bid then nbind = nbind + 1 end
+      if q[i] > 0 and qf[i] > 0.5 * q[i] then nfric = nfric + 1 end
+    end
+  end
+  local src = e.heat_friction + e.heat_plastic + e.heat_viscous
+  local tmax = 0
+  for i = 1, #T do if T[i] > tmax then tmax = T[i] end end
+  return {
+    string.format("heat: friction / plastic / viscous  %.4g / %.4g / %.4g of %.4g J/m",
+                  e.heat_friction / src, e.heat_plastic / src, e.heat_viscous / src, src),
+    string.format("heat: thermal energy in binder    %.4g", eb / (eb + eg)),
+    string.format("heat: peak temperature (K)        %.5g", tmax),
+    string.format("heat: particles above %g K       %d (binder %.4g, mostly friction %.4g)",
+                  P.hotspot_threshold, nhot, nhot > 0 and nbind / nhot or 0,
+                  nhot > 0 and nfric / nhot or 0),
+    string.format("heat: hot spots at the end        %d (area fraction %.4g)",
+                  last and last.count or 0, last and last.area_fraction or 0),
+    string.format("heat: residual_with_heat / work   %.4g", e.residual_with_heat / e.boundary_work),
+    string.format("heat: heat_residual / thermal     %.4g", e.heat_residual / e.thermal_energy),
+  }
 end
 
 -- at the end: the force-strain plot with locking events (the detector of
@@ -243,6 +323,9 @@ local function report(dir)
     string.format("invariant failures          %d", #mon.bad),
   }
   for _, b in ipairs(mon.bad) do lines[#lines + 1] = "invariant: " .. b end
+  if hot then
+    for _, l in ipairs(heat_report(dir)) do lines[#lines + 1] = l end
+  end
   f = assert(mvmpm.open(dir .. "/pbx_summary.txt"))
   f:write(table.concat(lines, "\n"), "\n")
   assert(f:close())
@@ -262,7 +345,7 @@ sim:every {steps = 1, fn = function(s)
   if not area0 and e.bonded_area > 0 then area0 = e.bonded_area end
   local fl, fr = side_force("left", left), side_force("right", right)
   acc, nacc = acc + (fr - fl) / (2 * W), nacc + 1
-  if s.steps % P.record == 0 or s.t >= t_end then
+  if s.steps % P.record == 0 or s.t >= t_end * (1 - 1e-9) then
     local g = strain_at(s.t)
     sample(s, e, g, acc / nacc)
     acc, nacc = 0, 0
@@ -281,15 +364,27 @@ sim:every {steps = 1, fn = function(s)
               title = string.format("grains, strain %.2f", strain_at(s.t))}
     s:render {file = "pbx_sdiff_" .. tag .. ".png", by = "sdiff", width = 900,
               title = string.format("|s1 - s2| (Pa), strain %.2f", strain_at(s.t))}
+    if hot then
+      s:render {file = "pbx_temperature_" .. tag .. ".png", by = "temperature", width = 900,
+                title = string.format("temperature (K), strain %.2f", strain_at(s.t))}
+      local hs = s:hotspots {threshold = P.hotspot_threshold}
+      local e = s:energy()
+      mon.hot[#mon.hot + 1] = {strain = strain_at(s.t), count = hs.count,
+                               area_fraction = hs.area_fraction, spots = hs,
+                               heat_friction = e.heat_friction, heat_plastic = e.heat_plastic,
+                               heat_viscous = e.heat_viscous, residual_with_heat = e.residual_with_heat,
+                               work = e.boundary_work}
+    end
     next_image = next_image + P.images
   end
-  if dir ~= "" and not reported and s.t >= t_end then
+  if dir ~= "" and not reported and s.t >= t_end * (1 - 1e-9) then
     reported = true
     if hist then hist:close(); hist = nil end
     report(dir)
   end
 end}
-sim:output {every = t_end / 10, csv_every = P.record}
+sim:output {every = t_end / 10, csv_every = P.record,
+            hotspots = hot and {threshold = P.hotspot_threshold} or nil}
 
 -- for scripts that load the scene (tests, bench): the bed and helpers
 PBX = {bed = bed, grains = grains, binder = binder, left = left, right = right,

@@ -10,10 +10,17 @@
 --
 -- Beside the files of shear_dry.lua it writes debond.png (the debonded
 -- fraction of the grain-binder interface against strain) and bond_NNN.png.
+-- With --set heat=true (grains' and binder's cv, k, beta: the heat
+-- parameters in lua/mvmpm/shear.lua) also temperature_NNN.png,
+-- heat.csv (heat by source, hot spots, the budget with heat), the
+-- hot-spot plots, hotspots_NNNNNN.csv beside the snapshots, and "heat:"
+-- lines in summary.txt (docs/hotspots.md).
 local mvmpm = require "mvmpm"
 local shear = require "mvmpm.shear"
 
 local P = mvmpm.params(shear.params {binder = true, bond = 0.01})
 local sim = shear.build(P)
-sim:output {dir = "out/shear_binder", every = sim.t_end / 20, csv_every = 20}
+local hot = P.heat == true or P.heat == "true"
+sim:output {dir = "out/shear_binder", every = sim.t_end / 20, csv_every = 20,
+            hotspots = hot and {threshold = P.T0 + P.hotspot_threshold} or nil}
 return sim

@@ -76,6 +76,23 @@ function M.params(extra)
     normal_window = 0,   -- ... from the shared nodes within this many cells
     contact_gap = "touch", -- or "step": contact judged at the step's end
     wall_contact = "node", -- or "patch": the sides act per contact patch
+    -- heat (off by default: the scene is then the same, bit for bit).
+    -- Nondimensional: temperature in units of energy per unit mass (cv
+    -- = 1 makes a particle's temperature rise its heat per unit mass),
+    -- T0 = 0.  The grain : binder ratios of cv and k are HMX's to a
+    -- polyurethane binder's (about 1000 : 1500 J/(kg K) and 0.45 : 0.15
+    -- W/(m K); docs/hotspots.md).  k = 1e-4 makes the diffusion length
+    -- over the whole run, sqrt(k t / rho c) = 0.07, a tenth of a grain
+    -- radius: nearly adiabatic, as HMX grains of 100 um are at these
+    -- strain rates (diffusion time 0.04 s against microseconds).
+    heat = false,
+    T0 = 0,
+    grain_cv = 1.0, grain_k = 1e-4, grain_beta = 0.9,
+    binder_cv = 1.5, binder_k = 1e-4 / 3, binder_beta = 0.9,
+    friction_split = 0.5,  -- heat's friction_split (share of the first body)
+    wall_heat = 1,         -- heat's wall_friction: share of the sides' friction heat kept
+    hotspot_threshold = 0.04, -- hot spots: temperature above T0 + this (about the
+                              -- 99th percentile at strain 1, 25 cells)
   }
   for k, v in pairs(extra or {}) do p[k] = v end
   return p
@@ -124,8 +141,15 @@ function M.build(P)
     sides = {left = side(-1), right = side(1), bottom = "periodic", top = "periodic"},
     contact = {friction = P.friction},
   }
+  local hot = P.heat == true or P.heat == "true"
+  if hot then
+    sim:heat {friction_split = P.friction_split, wall_friction = P.wall_heat}
+    sim:temperature(P.T0)
+  end
   local grain = mvmpm.plastic {K = 1, G = 0.5, density = 1, yield = P.yield,
-                               hardening = P.hardening, name = "grain"}
+                               hardening = P.hardening, name = "grain",
+                               cv = hot and P.grain_cv or nil, k = hot and P.grain_k or nil,
+                               beta = hot and P.grain_beta or nil}
   local bodies = {attached = {left = {}, right = {}}, free = {}}
   local bond = P.binder and P.bond > 0 and P.bond or nil
   for k, c in ipairs(M.cylinders) do
@@ -146,10 +170,13 @@ function M.build(P)
   if P.binder then
     local binder = mvmpm.viscoelastic {
       K = P.binder_K, G_inf = P.binder_G, density = 1, name = "binder",
+      cv = hot and P.binder_cv or nil, k = hot and P.binder_k or nil,
+      beta = hot and P.binder_beta or nil,
       prony = {{G = P.binder_G1, tau = P.binder_tau1}, {G = P.binder_G2, tau = P.binder_tau2}}}
     bodies.binder = sim:body {name = "binder", shape = mvmpm.rest(), material = binder,
                               bond = bond}
   end
+  bodies.hot = hot
   return sim, M.monitor(sim, P, bodies)
 end
 
@@ -285,6 +312,10 @@ function M.monitor(sim, P, bodies)
               title = string.format("|s1 - s2|, shear strain %.2f", g)}
     s:render {file = "body_" .. tag .. ".png", by = "body",
               width = P.width, title = string.format("bodies, shear strain %.2f", g)}
+    if bodies.hot then
+      s:render {file = "temperature_" .. tag .. ".png", by = "temperature", width = P.width,
+                title = string.format("temperature, shear strain %.2f", g)}
+    end
     if bodies.binder and P.bond > 0 then
       s:render {file = "bond_" .. tag .. ".png", by = "bond",
                 range = {0, P.bond}, width = P.width,
@@ -399,6 +430,21 @@ function M.monitor(sim, P, bodies)
     end
     row.deformation = gstrain + e.plastic
     for k = 1, #free do row["rot" .. k] = mon.rotation[k] end
+    if bodies.hot then
+      row.heat_friction, row.heat_plastic, row.heat_viscous = e.heat_friction, e.heat_plastic,
+                                                              e.heat_viscous
+      row.heat_wall, row.cold_work, row.thermal_energy = e.heat_wall, e.cold_work, e.thermal_energy
+      row.heat_residual, row.residual_with_heat = e.heat_residual, e.residual_with_heat
+      local hs = s:hotspots {threshold = P.T0 + P.hotspot_threshold}
+      row.hotspots, row.hotspot_area_fraction = hs.count, hs.area_fraction
+      row.T_max = 0
+      for _, T in ipairs(s:particles("temperature")) do
+        if T - P.T0 > row.T_max then row.T_max = T - P.T0 end
+      end
+      if math.abs(e.residual_with_heat) > (mon.max_residual_heat or 0) then
+        mon.max_residual_heat = math.abs(e.residual_with_heat)
+      end
+    end
     mon.rows[#mon.rows + 1] = row
     mon.strain[#mon.strain + 1], mon.force[#mon.force + 1] = g, force
     -- the most locked state: pictures whenever the force reaches a new
@@ -512,6 +558,46 @@ function M.chains(mon)
           share = last.work > 0 and last.deformation / last.work or 0}
 end
 
+-- Where the heat is (heat on): the shares of the sources in the heat
+-- booked, the shares of the thermal energy held by the grains (free and
+-- attached) and the binder, and of the particles above the hot-spot
+-- threshold: how many, the binder's share of them, and the share whose
+-- heat came mostly (over half) from friction.
+function M.where(mon)
+  local s, P = mon.sim, mon.P
+  local e = s:energy()
+  local T, m, q, qf, body = s:particles("temperature"), s:particles("mass"),
+    s:particles("heat"), s:particles("heat_friction"), s:particles("body")
+  local bid = mon.bodies.binder and mon.bodies.binder.id or -1
+  local eb, eg, nhot, nbind, nfric, qhot, qfhot = 0, 0, 0, 0, 0, 0, 0
+  for i = 1, #T do
+    local c = body[i] == bid and P.binder_cv or P.grain_cv
+    local th = m[i] * c * (T[i] - P.T0)
+    if body[i] == bid then eb = eb + th else eg = eg + th end
+    if T[i] > P.T0 + P.hotspot_threshold then
+      nhot = nhot + 1
+      if body[i] == bid then nbind = nbind + 1 end
+      if q[i] > 0 and qf[i] > 0.5 * q[i] then nfric = nfric + 1 end
+      qhot, qfhot = qhot + q[i], qfhot + qf[i]
+    end
+  end
+  local src = e.heat_friction + e.heat_plastic + e.heat_viscous
+  local r = mon.rows[#mon.rows]
+  return {
+    share_friction = src > 0 and e.heat_friction / src or 0,
+    share_plastic = src > 0 and e.heat_plastic / src or 0,
+    share_viscous = src > 0 and e.heat_viscous / src or 0,
+    thermal_in_binder = eb + eg > 0 and eb / (eb + eg) or 0,
+    hot_particles = nhot,
+    hot_in_binder = nhot > 0 and nbind / nhot or 0,
+    hot_mostly_friction = nhot > 0 and nfric / nhot or 0,
+    hot_heat_friction_share = qhot > 0 and qfhot / qhot or 0,
+    heat_residual_over_heat = e.thermal_energy ~= 0 and e.heat_residual / e.thermal_energy or 0,
+    residual_with_heat_over_work = r.work > 0 and e.residual_with_heat / r.work or 0,
+    max_residual_with_heat_over_work = r.work > 0 and (mon.max_residual_heat or 0) / r.work or 0,
+  }
+end
+
 -- summary figures of a monitor (for tests and reports)
 function M.summary(mon)
   local r = mon.rows[#mon.rows]
@@ -548,6 +634,33 @@ function M.report(mon, dir)
                   "pressing", "grain_grain", "grain_strain", "deformation", "deform_share"}
   for k = 1, #mon.bodies.free do header[#header + 1] = "rot" .. k end
   csv_write(dir .. "/shear.csv", header, mon.rows)
+  if mon.bodies.hot then
+    csv_write(dir .. "/heat.csv", {"t", "strain", "work", "friction", "plastic", "viscous",
+                                   "heat_friction", "heat_plastic", "heat_viscous", "heat_wall",
+                                   "cold_work", "thermal_energy", "heat_residual", "residual",
+                                   "residual_with_heat", "hotspots", "hotspot_area_fraction",
+                                   "T_max"}, mon.rows)
+    local col = function(name)
+      local t = {}
+      for k, r in ipairs(mon.rows) do t[k] = r[name] end
+      return t
+    end
+    mvmpm.plot {file = dir .. "/hotspots_strain.png", xlabel = "average shear strain",
+                ylabel = "count", title = string.format("Hot spots (T - T0 > %g)", P.hotspot_threshold),
+                series = {{x = mon.strain, y = col("hotspots"), label = "hot spots"}}}
+    local af = col("hotspot_area_fraction")
+    mvmpm.plot {file = dir .. "/hotspot_area_strain.png", xlabel = "average shear strain",
+                ylabel = "area fraction", title = string.format("Hot area (T - T0 > %g)", P.hotspot_threshold),
+                series = {{x = mon.strain, y = af, label = "area fraction above the threshold"}}}
+    mvmpm.plot {file = dir .. "/heat_strain.png", xlabel = "average shear strain", ylabel = "energy",
+                title = "Heat by source", series = {
+                  {x = mon.strain, y = col("work"), label = "work into the material"},
+                  {x = mon.strain, y = col("heat_friction"), label = "friction heat"},
+                  {x = mon.strain, y = col("heat_plastic"), label = "plastic heat"},
+                  {x = mon.strain, y = col("heat_viscous"), label = "viscous heat"},
+                  {x = mon.strain, y = col("thermal_energy"), label = "thermal energy"},
+                  {x = mon.strain, y = col("residual_with_heat"), label = "residual with heat"}}}
+  end
   csv_write(dir .. "/locking.csv", {"strain", "peak_strain", "end_strain", "base", "peak", "mean"},
             mon.events)
   csv_write(dir .. "/chains.csv", {"strain", "end_strain", "peak_strain", "peak", "grains"},
@@ -609,6 +722,13 @@ function M.report(mon, dir)
   table.sort(keys)
   for _, k in ipairs(keys) do f:write(string.format("%-20s %.6g\n", k, s[k])) end
   for _, b in ipairs(mon.bad) do f:write("invariant: ", b, "\n") end
+  if mon.bodies.hot then
+    local w = M.where(mon)
+    local hk = {}
+    for k in pairs(w) do hk[#hk + 1] = k end
+    table.sort(hk)
+    for _, k in ipairs(hk) do f:write(string.format("heat: %-28s %.6g\n", k, w[k])) end
+  end
   f:close()
   return s
 end

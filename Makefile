@@ -236,6 +236,31 @@ check-paraview: $(BIN) deps-paraview
 SHEAR_RUNS = shear_dry:scenarios/shear_dry.lua: \
              shear_binder:scenarios/shear_binder.lua: \
              shear_binder_bond0:scenarios/shear_binder.lua:--set=bond=0
+# hot-spot figures (docs/hotspots.md): the sliding block, the shear cell
+# with binder at 100 cells with heat, and a small PBX bed (0.24 mm,
+# grains at 0.35 of the default sizes, 3 cells across the smallest)
+# sheared to 50 % at 1e6/s with heat; figures into docs/figures/hotspots/
+HOT_PBX = --set size=0.24e-3 --set scale=0.35 --set cells=3 --set packing=0.7 --set rate=1e6 \
+	--set ramp=0.01 --set images=0.1 --set strain=0.5 --set heat=true --quiet
+hotspots: $(BIN)
+	@mkdir -p out docs/figures/hotspots
+	nohup sh -c 'D=docs/figures/hotspots; \
+	  ./$(BIN) run scenarios/hotspot_slide.lua --out out/hot_slide --overwrite --quiet || exit 1; \
+	  for k in 000005 000010; do ./$(BIN) render out/hot_slide/particles_$$k.h5 --by temperature \
+	    --range 300,450 --domain 0,2e-3,0.3e-3,0.8e-3 --out $$D/slide_temperature_$$k.png || exit 1; done; \
+	  cp out/hot_slide/hotspots_000010.csv $$D/slide_hotspots_000010.csv; \
+	  ./$(BIN) run scenarios/shear_binder.lua --set heat=true --set cells=100 --out out/hot_shear_binder --overwrite --quiet || exit 1; \
+	  for f in temperature_000 temperature_025 temperature_050 temperature_075 temperature_100 body_100 \
+	    hotspots_strain hotspot_area_strain heat_strain; do cp out/hot_shear_binder/$$f.png $$D/binder_$$f.png; done; \
+	  cp out/hot_shear_binder/heat.csv $$D/binder_heat.csv; cp out/hot_shear_binder/summary.txt $$D/binder_summary.txt; \
+	  ./$(BIN) run scenarios/pbx9501.lua $(HOT_PBX) --out out/hot_pbx --overwrite || exit 1; \
+	  cp out/hot_pbx/pbx_temperature_*.png out/hot_pbx/pbx_hotspots*.png out/hot_pbx/pbx_hotspots.csv \
+	    out/hot_pbx/pbx_summary.txt out/hot_pbx/pbx_body_050.png $$D/; \
+	  echo hotspot runs done' > out/hotspots.log 2>&1 &
+	@echo "running in the background; progress in out/hotspots.log"
+
+.PHONY: hotspots
+
 shear: $(BIN)
 	@mkdir -p out
 	nohup sh -c 'for r in $(SHEAR_RUNS); do \

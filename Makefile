@@ -248,7 +248,7 @@ hotspots: $(BIN)
 	  ./$(BIN) run scenarios/hotspot_slide.lua --out out/hot_slide --overwrite --quiet || exit 1; \
 	  for k in 000005 000010; do ./$(BIN) render out/hot_slide/particles_$$k.h5 --by temperature \
 	    --range 300,450 --domain 0,2e-3,0.3e-3,0.8e-3 --out $$D/slide_temperature_$$k.png || exit 1; done; \
-	  cp out/hot_slide/hotspots_000010.csv $$D/slide_hotspots_000010.csv; \
+	  cp out/hot_slide/hotspots_000010.csv $$D/slide_hotspots_000010.csv; cp out/hot_slide/hotspots_critical.png $$D/slide_hotspots_critical.png; \
 	  ./$(BIN) run scenarios/shear_binder.lua --set heat=true --set cells=100 --out out/hot_shear_binder --overwrite --quiet || exit 1; \
 	  for f in temperature_000 temperature_025 temperature_050 temperature_075 temperature_100 body_100 \
 	    hotspots_strain hotspot_area_strain heat_strain; do cp out/hot_shear_binder/$$f.png $$D/binder_$$f.png; done; \

@@ -27,7 +27,8 @@
 --
 -- Snapshots carry temperature, heat (J deposited per particle) and
 -- heat_friction; hotspots_NNNNNN.csv lists the regions above
--- `threshold` (K) beside each snapshot.
+-- `threshold` (K) beside each snapshot; hotspots_critical.png, at the
+-- end, draws them over HMX's critical curve (mvmpm.hotspot).
 local mvmpm = require "mvmpm"
 local K = require "mvmpm.kinetics"
 
@@ -70,4 +71,14 @@ sim:body {name = "block", shape = mvmpm.rect {lo = {0.25e-3, 0.5e-3}, hi = {0.75
           material = hmx, velocity = {P.speed, 0}, temperature = P.T0}
 sim:output {dir = "out/hotspot_slide", every = P.t_end / P.snapshots,
             hotspots = {threshold = P.threshold}}
+-- at the end: the hot spots at their equivalent radius and peak
+-- temperature over HMX's Frank-Kamenetskii critical curve
+sim:at_end(function(s)
+  if s.outdir == "" then return end
+  local H = require "mvmpm.hotspot"
+  H.plot {file = s.outdir .. "/hotspots_critical.png", spots = s:hotspots {threshold = P.threshold},
+          kinetics = K.hmx, density = R.density, conductivity = R.k, rmin = 1e-7, rmax = 1e-3,
+          title = string.format("hot spots above %g K at %g s over HMX's critical curve",
+                                P.threshold, s.t)}
+end)
 return sim

@@ -17,5 +17,7 @@ local shear = require "mvmpm.shear"
 
 local P = mvmpm.params(shear.params {})
 local sim = shear.build(P)
-sim:output {dir = "out/shear_dry", every = sim.t_end / 20, csv_every = 20}
+local hot = P.heat == true or P.heat == "true"   -- --set heat=true: docs/hotspots.md
+sim:output {dir = "out/shear_dry", every = sim.t_end / 20, csv_every = 20,
+            hotspots = hot and {threshold = P.T0 + P.hotspot_threshold} or nil}
 return sim

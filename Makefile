@@ -254,7 +254,7 @@ hotspots: $(BIN)
 	    hotspots_strain hotspot_area_strain heat_strain; do cp out/hot_shear_binder/$$f.png $$D/binder_$$f.png; done; \
 	  cp out/hot_shear_binder/heat.csv $$D/binder_heat.csv; cp out/hot_shear_binder/summary.txt $$D/binder_summary.txt; \
 	  ./$(BIN) run scenarios/pbx9501.lua $(HOT_PBX) --out out/hot_pbx --overwrite || exit 1; \
-	  cp out/hot_pbx/pbx_temperature_*.png out/hot_pbx/pbx_hotspots*.png out/hot_pbx/pbx_hotspots.csv \
+	  cp out/hot_pbx/pbx_temperature_*.png out/hot_pbx/pbx_hotspot*.png out/hot_pbx/pbx_hotspots.csv \
 	    out/hot_pbx/pbx_summary.txt out/hot_pbx/pbx_body_050.png $$D/; \
 	  echo hotspot runs done' > out/hotspots.log 2>&1 &
 	@echo "running in the background; progress in out/hotspots.log"

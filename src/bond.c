@@ -59,6 +59,19 @@ static int32_t nearest(const grid *g, const double *x) {
   return node;
 }
 
+/* particle i's displacement since its bond was cut (the nearest image
+** across a periodic side) */
+static void released(const grid *g, const particles *ps, int frel, size_t i,
+                     double u[DIM]) {
+  int d;
+  for (d = 0; d < DIM; d++) {
+    const double *x0 = particles_comp(ps, frel, 1 + d);
+    double L = g->hi[d] - g->lo[d];
+    u[d] = ps->x[d][i] - x0[i];
+    if (g->periodic[d]) u[d] -= L * floor(u[d] / L + 0.5);
+  }
+}
+
 /* Particles [i0, i1) into the slots of their shared nodes: strength,
 ** volume gradient, and the strength and mass each nearest node owns.
 ** With a plan (blk >= 0) only into the node rows this pass writes
@@ -70,6 +83,7 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double *bp = particles_comp(ps, s->fbond, 0);
+  const double *rel = particles_comp(ps, s->frel, 0);
   const int nw = shape_width(s->shape);
   /* the normals took the volume gradient in p2g already (the same sums
   ** in the same order) */
@@ -80,7 +94,7 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   stencil_geo geo;
   stencil_geo_init(&geo, g);
   for (i = i0; i < i1; i++) {
-    double x[DIM], mp = ps->m[i], V;
+    double x[DIM], mp = ps->m[i], V, u[DIM] = {0};
     int32_t node[STENCIL_MAX], f = bd[ps->body[i]].field, own;
     int nn, d, any = 0;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
@@ -91,6 +105,7 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
         !bands_rows(&s->bands, &geo, s->shape, x[BANDS_DIM], blk, pass, mine))
       continue;
     eval(s, &geo, x, &st);
+    if (rel[i] > 0) released(g, ps, s->frel, i, u);
 #if DIM == 2
     V = ps->vol0[i] * (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
 #endif
@@ -107,6 +122,10 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
 #endif
       if (!byvol)
         for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
+      if (rel[i] > 0) {
+        g->srm[sl] += st.w[k] * mp;
+        for (d = 0; d < DIM; d++) g->sru[d][sl] += st.w[k] * mp * u[d];
+      }
     }
     own = nearest(g, x);
     if (blk >= 0) {
@@ -155,6 +174,7 @@ static void scatter_part(void *arg, int t, int nparts) {
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   double *bp = particles_comp(ps, s->fbond, 0);
+  double *rel = particles_comp(ps, s->frel, 0);
   size_t i, i0, i1;
   par_range(ps->n, t, nparts, &i0, &i1);
   for (i = i0; i < i1; i++) {
@@ -166,8 +186,12 @@ static void scatter_part(void *arg, int t, int nparts) {
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     own = nearest(g, x);
     if (g->head[own] >= 0 &&
-        g->scut[grid_slot(g, own, bd[ps->body[i]].field)] > 0)
+        g->scut[grid_slot(g, own, bd[ps->body[i]].field)] > 0) {
       bp[i] = 0.0;
+      rel[i] = 1.0;
+      for (d = 0; d < DIM; d++)
+        ((double *)particles_comp(ps, s->frel, 1 + d))[i] = x[d];
+    }
   }
 }
 

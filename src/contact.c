@@ -429,6 +429,36 @@ static double closing(const sim *s, int32_t sl, int32_t o, int odriven,
   return 1 - gap / (w * s->dt);
 }
 
+/*
+** Contact where a bond was cut (sim.bond_release = "open").  Released, the
+** two sides are where the bond held them: touching, with a gap that then
+** opens by the difference of their displacements since the cut, which on
+** the concentric cylinders is a tenth of a cell, below what the
+** separation check resolves (particles' half-cell squares): each side's
+** reach overlaps the other's, contact took every approach of the ringing
+** as an impact and rectified it into a squeeze (the disc held at -0.67 of
+** its bonded stress, where it should relax to zero).  So where both sides
+** at a node hold released particles (bond_scatter records where each
+** was), the opening is measured from them,
+**   gap = -(u_r - u_o) . n_r,  u_r = sum_p m_p S_ip (x_p - x_p,cut) / sum m_p S_ip
+** over r's released particles, and closing() judges the step with it:
+** the bodies meet again only once the opening has closed.  Returns 1 and
+** the gap where it can be measured, 0 where not (a driven partner, or a
+** side with no released particle here: the separation check decides).
+*/
+static int opening(const sim *s, int32_t sl, int32_t o, double *gap) {
+  const grid *g = &s->g;
+  double u = 0;
+  int d;
+  if (s->frel < 0 || o < 0 || s->fdriven[g->sfield[o]] >= 0 ||
+      !(g->srm[sl] > s->mcut) || !(g->srm[o] > s->mcut))
+    return 0;
+  for (d = 0; d < DIM; d++)
+    u += (g->sru[d][sl] / g->srm[sl] - g->sru[d][o] / g->srm[o]) * g->sn[d][sl];
+  *gap = -u;
+  return 1;
+}
+
 /* the correction at shared node k; rec: record the driven body's force
 ** and work for contact_apply to add up in order (a threaded pass) */
 static void node(sim *s, size_t k0, double *const mom[DIM],
@@ -456,6 +486,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     for (d = 0; d < DIM; d++) vref[d] = mom[d][n] / M;
   for (k = 0; k < ns; k++) {
     double dp[DIM], t[DIM], dn = 0, tt = 0, mr, mu, other = -1e300, mo = -1, fn;
+    double gap;
     int32_t o = -1;
     int j;
     sl = slots[k];
@@ -494,8 +525,11 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     }
     if (!(dn > 0)) continue;
     fn = 1;
-    if (s->gap_check) {
-      double gap = -(g->sext[sl] + other);
+    if (s->release == RELEASE_OPEN && opening(s, sl, o, &gap)) {
+      fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);
+      if (!(fn > 0)) continue;
+    } else if (s->gap_check) {
+      gap = -(g->sext[sl] + other);
       if (s->gap_step) {
         fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);
         if (!(fn > 0)) continue;

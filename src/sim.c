@@ -27,6 +27,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->faff = -1;
   s->t_stop = INFINITY;
   s->fbond = -1;
+  s->frel = -1;
   s->mcut_rel = 1e-9;
   s->sort_every = 20;
   s->ppc = ppc;
@@ -72,6 +73,7 @@ void sim_free(sim *s) {
   free(s->wext);
   free(s->crec);
   free(s->cbody);
+
   free(s->prof);
   memset(s, 0, sizeof *s);
 }
@@ -288,7 +290,10 @@ int sim_enable_bonds(sim *s) {
   if (s->fbond < 0)
     s->fbond = particles_add_field(&s->ps, "bond", 1, PF_DOUBLE, "M/(L T^2)",
                                    PF_OUTPUT | PF_RESTART);
-  return s->fbond;
+  if (s->fbond >= 0 && s->frel < 0)
+    s->frel = particles_add_field(&s->ps, "release", DIM + 1, PF_DOUBLE, "L",
+                                  PF_RESTART);
+  return s->frel < 0 ? -1 : s->fbond;
 }
 
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],

@@ -38,6 +38,10 @@ enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
 ** for both sides, or the least-squares plane between the particles */
 enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
                     NORMALS_PLANE };
+/* contact where a bond was cut (contact.c): only once the opening measured
+** from the sides' displacements since the cut closes, or by the separation
+** check like any contact */
+enum release_kind { RELEASE_OPEN, RELEASE_CONTACT };
 /* the widest window the normals may take (cells each way) */
 #define NORMAL_WINDOW_MAX 4
 #define NSIDES (2 * DIM)
@@ -123,6 +127,9 @@ typedef struct sim {
   unsigned char *flaw; /* per field: 1 if some override names it */
   double bond_default; /* bond cap where no law says otherwise (INFINITY) */
   int fbond;         /* particle field "bond" (strength), -1: no bonds */
+  int frel;          /* particle field "release": 1 once the particle's bond
+                        was cut, then its position then (bond.c) */
+  int release;       /* enum release_kind: contact across a released bond */
   size_t ncut;       /* interface slots debonded in the last step */
   size_t ncut_total; /* ... since the start */
   double bond_area;  /* bonded interface area in the last step (length in

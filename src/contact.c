@@ -18,7 +18,8 @@
 ** forces, compressive tractions included, it would move into the other
 ** material) and, with the separation check on, the surfaces touch
 ** (reach.c), or with sim.contact_gap = "step" would meet within the
-** step (closing() below, which also scales the normal part down).
+** step (closing() below, which also scales the normal part down); where
+** a bond was cut, the opening since the cut decides (opening() below).
 ** Then the normal part of dp_r is removed and the tangential part t is
 ** reduced by mu dn (Coulomb), or removed if |t| <= mu dn (stick).  The
 ** corrections are made to sum to zero (mass-weighted residual), so the

@@ -61,6 +61,7 @@ static void slots_free(grid *g) {
   free(g->snext); free(g->sfield); free(g->snode); free(g->sm);
   free(g->sext); free(g->sb); free(g->scut); free(g->sbonded);
   free(g->sbo); free(g->smo); free(g->ssw); free(g->srm);
+  free(g->sft); free(g->sfok);
   for (d = 0; d < DIM; d++) free(g->sru[d]);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) free(g->sst[d]);
   for (d = 0; d < DIM; d++) free(g->sv[d]);
@@ -132,6 +133,7 @@ static int slots_grow(grid *g) {
   GROW(g->sbonded, unsigned char, cap);
   GROW(g->sbo, double, cap); GROW(g->smo, double, cap);
   GROW(g->ssw, double, cap); GROW(g->srm, double, cap);
+  GROW(g->sft, double, cap); GROW(g->sfok, unsigned char, cap);
   for (d = 0; d < DIM; d++) GROW(g->sru[d], double, cap);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) GROW(g->sst[d], double, cap);
   for (d = 0; d < DIM; d++) GROW(g->sv[d], double, cap);

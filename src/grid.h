@@ -49,6 +49,10 @@ typedef struct grid {
   /* the particles whose bond was cut (bond.c): sum_p m_p S_ip, and
   ** sum_p m_p S_ip (x_p - x_p at the cut), for the opening (contact.c) */
   double *srm, *sru[DIM];
+  /* the traction fitted at the slot (contact.c, bond_traction = "fit"),
+  ** and whether a fit was found there */
+  double *sft;
+  unsigned char *sfok;
   /* sum_p w_p sigma_p (in-plane, upper triangle as sxx) and sum_p w_p,
   ** w_p = V_p S_ip, over the field's particles (bond.c): the stress the
   ** bond test projects on the normal */

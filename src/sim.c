@@ -73,7 +73,8 @@ void sim_free(sim *s) {
   free(s->wext);
   free(s->crec);
   free(s->cbody);
-
+  free(s->bfit);
+  free(s->bffield);
   free(s->prof);
   memset(s, 0, sizeof *s);
 }
@@ -293,6 +294,11 @@ int sim_enable_bonds(sim *s) {
   if (s->fbond >= 0 && s->frel < 0)
     s->frel = particles_add_field(&s->ps, "release", DIM + 1, PF_DOUBLE, "L",
                                   PF_RESTART);
+  if (s->frel >= 0 && !s->bfit) {
+    s->bfit = malloc(BF_N * s->g.nnodes * sizeof *s->bfit);
+    s->bffield = malloc(s->g.nnodes * sizeof *s->bffield);
+    if (!s->bfit || !s->bffield) return -1;
+  }
   return s->frel < 0 ? -1 : s->fbond;
 }
 

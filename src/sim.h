@@ -130,6 +130,13 @@ typedef struct sim {
   int frel;          /* particle field "release": 1 once the particle's bond
                         was cut, then its position then (bond.c) */
   int release;       /* enum release_kind: contact across a released bond */
+  int bond_fit;      /* bond traction from the sides' fitted profiles */
+  double bond_length; /* ... averaged over this length along the interface */
+  /* per node, the bond traction's sums over the particles near, not at,
+  ** an interface (bond.c: BF_* arrays of nnodes each), and the field they
+  ** belong to */
+  double *bfit;
+  int32_t *bffield;
   size_t ncut;       /* interface slots debonded in the last step */
   size_t ncut_total; /* ... since the start */
   double bond_area;  /* bonded interface area in the last step (length in
@@ -260,6 +267,11 @@ void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
 int contact_prepare(sim *s);   /* contact.c: room for its records */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
+/* bond fit sums: weight, first and second moments of the offset from
+** the node, stress (xx, xy, yy), stress times offset (a * DIM + c) */
+enum { BF_W, BF_U = 1, BF_UU = 1 + DIM, BF_S = 1 + DIM + DIM * (DIM + 1) / 2,
+       BF_SU = BF_S + DIM * (DIM + 1) / 2,
+       BF_N = BF_SU + DIM * DIM * (DIM + 1) / 2 };
 void bond_gather(sim *s);      /* bond.c: strength, stress at shared slots */
 void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
 void bond_remap(sim *s);       /* bond.c: bonded slots take the node's

@@ -23,7 +23,11 @@ local function profile(sim, dT)
 end
 
 -- the shape set here: the numbers below depend on it
-local sim = mvmpm.load("scenarios/concentric_debond.lua", {strength = sb, t_end = 30, shape = "linear"})
+-- the bond test's traction: both sides' stress profiles fitted across the
+-- interface and averaged over 0.12 along it (sim.bond_traction = "fit")
+local fit = {traction = "fit", bond_length = 0.12}
+local sim = mvmpm.load("scenarios/concentric_debond.lua",
+  {strength = sb, t_end = 30, shape = "linear", traction = fit.traction, bond_length = fit.bond_length})
 local first, gone
 sim:every {steps = 1, fn = function(s)
   local e = s:energy()
@@ -64,7 +68,8 @@ end
 local relax = {}
 local function onset(cells, shape, rel)
   local sm = mvmpm.load("scenarios/concentric_debond.lua",
-    {strength = sb, t_end = 30, cells = cells, shape = shape})
+    {strength = sb, t_end = 30, cells = cells, shape = shape,
+     traction = fit.traction, bond_length = fit.bond_length})
   local t0, mean = nil, rel and relaxed(sm)
   sm:every {steps = 1, fn = function(x)
     if not t0 and x:energy().debonded > 0 then t0 = x.t end
@@ -81,19 +86,18 @@ local err = {}
 for i, r in ipairs(res) do
   err[i] = math.abs(r[2] - 1)
   V.info(string.format("%d cells: onset / analytic", r[1]), r[2])
-  -- an exactly uniform Lame disc must not let go before its strength:
-  -- the old force-over-area rule cut at 0.914, 0.896, 0.892 (25, 50, 100)
-  V.above(string.format("%d cells: onset / analytic (no early cut)", r[1]), r[2], 0.97)
-  V.below(string.format("%d cells: |onset / analytic - 1|", r[1]), err[i], 0.08)
+  -- target: within 3 % at every resolution (with the mixture of the
+  -- particles' stresses it was 1.065, 1.059, 1.007, 0.964 at 25, 35, 50,
+  -- 100 cells: docs/verification.md)
+  V.below(string.format("%d cells: |onset / analytic - 1|", r[1]), err[i], 0.03)
 end
--- The target is 3 % at every resolution with a clear order; measured
--- 6.5 %, 5.9 %, 0.8 % (and 3.6 % early at 100 cells, studies/concentric.lua):
--- not met at 25 and 35 cells, and no steady order (docs/verification.md).
+-- the errors are 0.6 %, 0.2 %, 0.5 %: within the target, but with no
+-- steady order between 35 and 50 cells (docs/verification.md)
 V.info("observed order, 25 -> 35 cells", math.log(err[1] / err[2]) / math.log(35 / 25))
 V.info("observed order, 35 -> 50 cells", math.log(err[2] / err[3]) / math.log(50 / 35))
-V.info("target: onset within 3 % at all three, converging (1 met, 0 not)",
-  (err[1] <= 0.03 and err[2] <= 0.03 and err[3] <= 0.03) and 1 or 0)
-V.info("uGIMP, 25 cells: onset / analytic", onset(25, "gimp"))
+-- uGIMP: 1.055 / 1.006 / 0.999 at 25 / 35 / 50 cells (the study): the
+-- target is missed at 25 cells
+V.info("uGIMP, 25 cells: onset / analytic (target 3 %: missed)", onset(25, "gimp"))
 -- The load is uniform along the interface (the exact solution lets go
 -- everywhere at once): what spreads the release over time is only the
 -- traction's residual scatter, so the "front" here is no crack tip.  The

@@ -294,7 +294,7 @@ int sim_enable_bonds(sim *s) {
   if (s->fbond >= 0 && s->frel < 0)
     s->frel = particles_add_field(&s->ps, "release", DIM + 1, PF_DOUBLE, "L",
                                   PF_RESTART);
-  if (s->frel >= 0 && !s->bfit) {
+  if (s->frel >= 0 && s->bond_fit && !s->bfit) { /* only for bond_traction = "fit" */
     s->bfit = malloc(BF_N * s->g.nnodes * sizeof *s->bfit);
     s->bffield = malloc(s->g.nnodes * sizeof *s->bffield);
     if (!s->bfit || !s->bffield) return -1;

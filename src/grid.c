@@ -60,7 +60,9 @@ static void slots_free(grid *g) {
   int d;
   free(g->snext); free(g->sfield); free(g->snode); free(g->sm);
   free(g->sext); free(g->sb); free(g->scut); free(g->sbonded);
-  free(g->sbo); free(g->smo); free(g->ssw);
+  free(g->sbo); free(g->smo); free(g->ssw); free(g->srm);
+  free(g->sft); free(g->sfok);
+  for (d = 0; d < DIM; d++) free(g->sru[d]);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) free(g->sst[d]);
   for (d = 0; d < DIM; d++) free(g->sv[d]);
   free(g->sw);
@@ -130,7 +132,9 @@ static int slots_grow(grid *g) {
   GROW(g->sb, double, cap); GROW(g->scut, double, cap);
   GROW(g->sbonded, unsigned char, cap);
   GROW(g->sbo, double, cap); GROW(g->smo, double, cap);
-  GROW(g->ssw, double, cap);
+  GROW(g->ssw, double, cap); GROW(g->srm, double, cap);
+  GROW(g->sft, double, cap); GROW(g->sfok, unsigned char, cap);
+  for (d = 0; d < DIM; d++) GROW(g->sru[d], double, cap);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) GROW(g->sst[d], double, cap);
   for (d = 0; d < DIM; d++) GROW(g->sv[d], double, cap);
   for (d = 0; d < DIM; d++) {
@@ -178,6 +182,8 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
   memset(g->sbo + s0, 0, n);
   memset(g->smo + s0, 0, n);
   memset(g->ssw + s0, 0, n);
+  memset(g->srm + s0, 0, n);
+  for (d = 0; d < DIM; d++) memset(g->sru[d] + s0, 0, n);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) memset(g->sst[d] + s0, 0, n);
   for (d = 0; d < DIM; d++) {
     memset(g->sv[d] + s0, 0, n);

@@ -46,6 +46,13 @@ typedef struct grid {
   double *sbo, *smo;   /* strength x mass, and mass, of the particles whose
                           nearest node this is (bond.c) */
   unsigned char *sbonded; /* bonded this step: moves with the node */
+  /* the particles whose bond was cut (bond.c): sum_p m_p S_ip, and
+  ** sum_p m_p S_ip (x_p - x_p at the cut), for the opening (contact.c) */
+  double *srm, *sru[DIM];
+  /* the traction fitted at the slot (contact.c, bond_traction = "fit"),
+  ** and whether a fit was found there */
+  double *sft;
+  unsigned char *sfok;
   /* sum_p w_p sigma_p (in-plane, upper triangle as sxx) and sum_p w_p,
   ** w_p = V_p S_ip, over the field's particles (bond.c): the stress the
   ** bond test projects on the normal */

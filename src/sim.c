@@ -29,6 +29,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->faff = -1;
   s->t_stop = INFINITY;
   s->fbond = -1;
+  s->frel = -1;
   s->mcut_rel = 1e-9;
   s->sort_every = 20;
   s->ppc = ppc;
@@ -81,6 +82,8 @@ void sim_free(sim *s) {
   free(s->wext);
   free(s->crec);
   free(s->cbody);
+  free(s->bfit);
+  free(s->bffield);
   free(s->prof);
   heat_free(s);
   memset(s, 0, sizeof *s);
@@ -299,7 +302,15 @@ int sim_enable_bonds(sim *s) {
   if (s->fbond < 0)
     s->fbond = particles_add_field(&s->ps, "bond", 1, PF_DOUBLE, "M/(L T^2)",
                                    PF_OUTPUT | PF_RESTART);
-  return s->fbond;
+  if (s->fbond >= 0 && s->frel < 0)
+    s->frel = particles_add_field(&s->ps, "release", DIM + 1, PF_DOUBLE, "L",
+                                  PF_RESTART);
+  if (s->frel >= 0 && s->bond_fit && !s->bfit) { /* only for bond_traction = "fit" */
+    s->bfit = malloc(BF_N * s->g.nnodes * sizeof *s->bfit);
+    s->bffield = malloc(s->g.nnodes * sizeof *s->bffield);
+    if (!s->bfit || !s->bffield) return -1;
+  }
+  return s->frel < 0 ? -1 : s->fbond;
 }
 
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],

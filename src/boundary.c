@@ -23,10 +23,11 @@
 #include <string.h>
 #include "sim.h"
 
-/* one node (or slot) of mass m against side k; returns the impulse */
+/* one node (or slot) of mass m against side k; returns the impulse,
+** kept in fi, ni (or sfi, sni) for book.c */
 static int wall_node(sim *s, side *sd, int d, double sign, double m,
                      double *const p0[DIM], double *const mom[DIM], size_t i,
-                     double *imp) {
+                     double *imp, double *const fi[DIM], double *const ni[DIM]) {
   double dp[DIM], dn, tt = 0, w = 0, loss = 0;
   int e;
   for (e = 0; e < DIM; e++) {
@@ -45,15 +46,17 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
     else imp[e] = -dp[e];
   }
   /* dissipated: minus the impulse's work on the mean of the velocity the
-  ** step began with and the one it ends with, in the wall's frame (see
-  ** contact.c) */
+  ** step began with and the one the particles are given, in the wall's
+  ** frame; here the first half, book_finish the second (book.c) */
   for (e = 0; e < DIM; e++)
-    if (e != d)
-      loss -= 0.5 * (p0[e][i] + mom[e][i] + imp[e] - 2 * m * sd->v[e]) * imp[e];
-  s->e.friction += loss / m;
+    if (e != d) {
+      loss -= (0.5 * p0[e][i] - m * sd->v[e]) * imp[e];
+      fi[e][i] += imp[e];
+    }
   /* the normal impulse's likewise: an impact's loss at the node */
-  s->e.impact -= 0.5 * (p0[d][i] + mom[d][i] + imp[d] - 2 * m * sd->v[d]) *
-                 imp[d] / m;
+  s->e.friction += loss / m;
+  s->e.impact -= (0.5 * p0[d][i] - m * sd->v[d]) * imp[d] / m;
+  ni[d][i] += imp[d];
   for (e = 0; e < DIM; e++) {
     mom[e][i] += imp[e];
     w += imp[e] * sd->v[e];
@@ -78,13 +81,15 @@ static void wall_line(sim *s, int k, int line, int first) {
     if (g->m[n] <= s->mcut) continue;
     if (s->gap_check && sd->ext[j] < 0) continue;
     if (g->head[n] < 0) {
-      int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, imp);
+      int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, imp,
+                        g->fi, g->ni);
       *act = (unsigned char)a;
       continue;
     }
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       if (g->sm[sl] <= s->mcut) continue;
-      if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, imp) && act)
+      if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, imp,
+                    g->sfi, g->sni) && act)
         *act = 1;
       for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
     }
@@ -216,8 +221,14 @@ static void patch_field(sim *s, int k, int j0, int len, int first, int last,
         double *q = sl < 0 ? &g->q[e][n] : &g->sq[e][sl];
         double p0 = sl < 0 ? g->p[e][n] : g->sp[e][sl];
         imp = m * dv[e];
-        /* dissipated, as wall_node books it */
-        if (e != d) loss -= 0.5 * (p0 + *q + imp - 2 * m * sd->v[e]) * dv[e];
+        /* dissipated, as wall_node books it (first half) */
+        if (e != d) {
+          loss -= (0.5 * p0 - m * sd->v[e]) * dv[e];
+          *(sl < 0 ? &g->fi[e][n] : &g->sfi[e][sl]) += imp;
+        } else {
+          s->e.impact -= (0.5 * p0 - m * sd->v[e]) * dv[e];
+          *(sl < 0 ? &g->ni[e][n] : &g->sni[e][sl]) += imp;
+        }
         *q += imp;
         if (sl >= 0) g->q[e][n] += imp;
         w += imp * sd->v[e];
@@ -267,6 +278,8 @@ static void patch_deep(sim *s, int k, int first, int last) {
         double dn = sign * (g->q[d][n] - g->m[n] * sd->v[d]);
         if (!(dn > 0)) continue;
         g->q[d][n] -= sign * dn;
+        g->ni[d][n] -= sign * dn;
+        s->e.impact += (0.5 * g->p[d][n] / g->m[n] - sd->v[d]) * sign * dn;
         sd->force[d] -= sign * dn / s->dt;
         w -= sign * dn * sd->v[d];
         sd->acted[(size_t)(line - first) * g->n[o] + j] = 1;
@@ -279,6 +292,8 @@ static void patch_deep(sim *s, int k, int first, int last) {
         if (!(dn > 0)) continue;
         g->sq[d][sl] -= sign * dn;
         g->q[d][n] -= sign * dn;
+        g->sni[d][sl] -= sign * dn;
+        s->e.impact += (0.5 * g->sp[d][sl] / g->sm[sl] - sd->v[d]) * sign * dn;
         sd->force[d] -= sign * dn / s->dt;
         w -= sign * dn * sd->v[d];
         sd->acted[(size_t)(line - first) * g->n[o] + j] = 1;

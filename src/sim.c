@@ -563,10 +563,12 @@ int sim_step(sim *s) {
     ** scene holds them (boundary_remap says why and what it costs) */
     solve_remap(s); /* g2p mapped the updated momenta back */
     if (sim_wall_hold(s)) boundary_remap(s);
+    book_finish(s); /* on the remapped motion (book.c) */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
     prof_mark(s->prof, PROF_REMAP);
   }
+  if (!musl) book_finish(s); /* no remap: on vL */
   if (s->temp_on) thermal(s);
   if (constitutive(s, usavg ? 0.5 * s->dt : s->dt)) return -1;
   prof_mark(s->prof, PROF_CONST);

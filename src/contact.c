@@ -25,24 +25,23 @@
 ** node's total momentum is conserved to round-off;
 ** with two fields the residual is round-off itself.
 **
-** What contact dissipates.  Over a step the nodal kinetic energy of a
-** field changes by exactly (dt f_r + c_r) . (v_r^n + v_r^L) / 2: each
-** impulse times the mean of the velocity the step began with (p2g's)
-** and the velocity it ends with (after every correction).  The part of
-** the contact impulse c_r, -c_r . (v_r^n + v_r^L) / 2 summed over the
-** fields (the same in any frame, as sum_r c_r = 0; with a driven
-** partner, taken in its frame, it is the drive's work on r less what r
-** gains), is what contact dissipates.  Why not the kinetic energy the
-** correction itself removes, (|t|^2 - |t'|^2) / (2 m_r), measured on the
-** velocity after this step's forces: at a node holding a sliver of a
-** body (tiny m_r) the forces give a large velocity that the correction
-** takes back at once, and the count is of order m_r (f_r dt / m_r)^2,
-** large where the motion it stands for is none; the mean velocity has
-** the force's share halved and cancels it.  Measured in the sheared
-** cell with unbonded binder (50 cells, linear hats): the old measure
-** left the budget 17 % short.  The tangential part is friction's; the
-** normal part, booked by the same rule as e.impact, is the loss of an
-** impact the node makes perfectly inelastic: numerical, not friction.
+** What contact dissipates.  Over a step the kinetic energy of the
+** particles of field r changes by each impulse times the mean of the
+** velocity the step began with (p2g's, v_r^n) and the one the particles
+** carry away (v_r^r, MUSL's remap; book.c says why that one and not the
+** node's vL).  The part of the contact impulse c_r,
+** -c_r . (v_r^n + v_r^r) / 2 summed over the fields (the same in any
+** frame, as sum_r c_r = 0; with a driven partner, taken in its frame,
+** it is the drive's work on r less what r gains), is what contact
+** dissipates: the first half here (lose()), the second in book.c once
+** the particles have moved.  Why not the kinetic energy the correction
+** itself removes, (|t|^2 - |t'|^2) / (2 m_r): at a node holding a sliver
+** of a body (tiny m_r) the forces give a large velocity that the
+** correction takes back at once, and the count is of order
+** m_r (f_r dt / m_r)^2, large where the motion it stands for is none.
+** The tangential part is friction's; the normal part, booked by the same
+** rule as e.impact, is the loss of an impact the node makes perfectly
+** inelastic: numerical, not friction.
 */
 #include <math.h>
 #include <stdlib.h>

@@ -24,10 +24,10 @@
 #include "sim.h"
 
 /* one node (or slot) of mass m against side k; returns the impulse,
-** kept in fi, ni (or sfi, sni) for book.c */
+** its friction part kept in fi (or sfi) for book.c */
 static int wall_node(sim *s, side *sd, int d, double sign, double m,
                      double *const p0[DIM], double *const mom[DIM], size_t i,
-                     double *imp, double *const fi[DIM], double *const ni[DIM]) {
+                     double *imp, double *const fi[DIM]) {
   double dp[DIM], dn, tt = 0, w = 0, loss = 0;
   int e;
   for (e = 0; e < DIM; e++) {
@@ -53,10 +53,15 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
       loss -= (0.5 * p0[e][i] - m * sd->v[e]) * imp[e];
       fi[e][i] += imp[e];
     }
-  /* the normal impulse's likewise: an impact's loss at the node */
+  /* the normal impulse's: an impact's loss at the node, booked whole
+  ** here on the mean of v^n and the wall's velocity, which the node's
+  ** normal velocity now is: the motion the stresses see (held on the
+  ** remap under gravity; otherwise the remap keeps the particles'
+  ** approach, which the positions do not make, and booked on it the
+  ** loss overshoots: a plastic disc thrown at a wall, linear hats,
+  ** 2.7 % of its energy against 0.9 %) */
   s->e.friction += loss / m;
-  s->e.impact -= (0.5 * p0[d][i] - m * sd->v[d]) * imp[d] / m;
-  ni[d][i] += imp[d];
+  s->e.impact -= 0.5 * (p0[d][i] - m * sd->v[d]) * imp[d] / m;
   for (e = 0; e < DIM; e++) {
     mom[e][i] += imp[e];
     w += imp[e] * sd->v[e];
@@ -82,14 +87,14 @@ static void wall_line(sim *s, int k, int line, int first) {
     if (s->gap_check && sd->ext[j] < 0) continue;
     if (g->head[n] < 0) {
       int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, imp,
-                        g->fi, g->ni);
+                        g->fi);
       *act = (unsigned char)a;
       continue;
     }
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
       if (g->sm[sl] <= s->mcut) continue;
       if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, imp,
-                    g->sfi, g->sni) && act)
+                    g->sfi) && act)
         *act = 1;
       for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
     }
@@ -225,10 +230,8 @@ static void patch_field(sim *s, int k, int j0, int len, int first, int last,
         if (e != d) {
           loss -= (0.5 * p0 - m * sd->v[e]) * dv[e];
           *(sl < 0 ? &g->fi[e][n] : &g->sfi[e][sl]) += imp;
-        } else {
-          s->e.impact -= (0.5 * p0 - m * sd->v[e]) * dv[e];
-          *(sl < 0 ? &g->ni[e][n] : &g->sni[e][sl]) += imp;
-        }
+        } else /* the normal part on the mean of v^n and the patch's */
+          s->e.impact -= (0.5 * (p0 + *q + imp) - m * sd->v[e]) * dv[e];
         *q += imp;
         if (sl >= 0) g->q[e][n] += imp;
         w += imp * sd->v[e];
@@ -278,8 +281,7 @@ static void patch_deep(sim *s, int k, int first, int last) {
         double dn = sign * (g->q[d][n] - g->m[n] * sd->v[d]);
         if (!(dn > 0)) continue;
         g->q[d][n] -= sign * dn;
-        g->ni[d][n] -= sign * dn;
-        s->e.impact += (0.5 * g->p[d][n] / g->m[n] - sd->v[d]) * sign * dn;
+        s->e.impact += 0.5 * (g->p[d][n] / g->m[n] - sd->v[d]) * sign * dn;
         sd->force[d] -= sign * dn / s->dt;
         w -= sign * dn * sd->v[d];
         sd->acted[(size_t)(line - first) * g->n[o] + j] = 1;
@@ -292,8 +294,7 @@ static void patch_deep(sim *s, int k, int first, int last) {
         if (!(dn > 0)) continue;
         g->sq[d][sl] -= sign * dn;
         g->q[d][n] -= sign * dn;
-        g->sni[d][sl] -= sign * dn;
-        s->e.impact += (0.5 * g->sp[d][sl] / g->sm[sl] - sd->v[d]) * sign * dn;
+        s->e.impact += 0.5 * (g->sp[d][sl] / g->sm[sl] - sd->v[d]) * sign * dn;
         sd->force[d] -= sign * dn / s->dt;
         w -= sign * dn * sd->v[d];
         sd->acted[(size_t)(line - first) * g->n[o] + j] = 1;

@@ -14,7 +14,7 @@
 --      smallest diameter: residual below 2 % of the piston's work; the
 --      same pack without friction as the control.
 -- Schemes asserted: FLIP on linear hats, GIMP and B-splines (the blend
--- flip = 0.99 in studies/); APIC and XPIC are printed (2-3 % in the
+-- flip = 0.99 in studies/); APIC and XPIC are printed (2-3.4 % in the
 -- piston pack at 4 cells: not met; docs/verification.md).
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"

@@ -26,24 +26,23 @@
 ** node's total momentum is conserved to round-off;
 ** with two fields the residual is round-off itself.
 **
-** What contact dissipates.  Over a step the nodal kinetic energy of a
-** field changes by exactly (dt f_r + c_r) . (v_r^n + v_r^L) / 2: each
-** impulse times the mean of the velocity the step began with (p2g's)
-** and the velocity it ends with (after every correction).  The part of
-** the contact impulse c_r, -c_r . (v_r^n + v_r^L) / 2 summed over the
-** fields (the same in any frame, as sum_r c_r = 0; with a driven
-** partner, taken in its frame, it is the drive's work on r less what r
-** gains), is what contact dissipates.  Why not the kinetic energy the
-** correction itself removes, (|t|^2 - |t'|^2) / (2 m_r), measured on the
-** velocity after this step's forces: at a node holding a sliver of a
-** body (tiny m_r) the forces give a large velocity that the correction
-** takes back at once, and the count is of order m_r (f_r dt / m_r)^2,
-** large where the motion it stands for is none; the mean velocity has
-** the force's share halved and cancels it.  Measured in the sheared
-** cell with unbonded binder (50 cells, linear hats): the old measure
-** left the budget 17 % short.  The tangential part is friction's; the
-** normal part, booked by the same rule as e.impact, is the loss of an
-** impact the node makes perfectly inelastic: numerical, not friction.
+** What contact dissipates.  Over a step the kinetic energy of the
+** particles of field r changes by each impulse times the mean of the
+** velocity the step began with (p2g's, v_r^n) and the one the particles
+** carry away (v_r^r, MUSL's remap; book.c says why that one and not the
+** node's vL).  The part of the contact impulse c_r,
+** -c_r . (v_r^n + v_r^r) / 2 summed over the fields (the same in any
+** frame, as sum_r c_r = 0; with a driven partner, taken in its frame,
+** it is the drive's work on r less what r gains), is what contact
+** dissipates: the first half here (lose()), the second in book.c once
+** the particles have moved.  Why not the kinetic energy the correction
+** itself removes, (|t|^2 - |t'|^2) / (2 m_r): at a node holding a sliver
+** of a body (tiny m_r) the forces give a large velocity that the
+** correction takes back at once, and the count is of order
+** m_r (f_r dt / m_r)^2, large where the motion it stands for is none.
+** The tangential part is friction's; the normal part, booked by the same
+** rule as e.impact, is the loss of an impact the node makes perfectly
+** inelastic: numerical, not friction.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -510,17 +509,19 @@ static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
   return -1;
 }
 
-/* what slot sl's friction impulse c dissipates: minus its work on the
-** slot's mean motion over the step, half the momentum the step began
-** with (p) plus half the momentum after every correction (post), both
-** relative to the reference velocity vref */
+/* the first half of what slot sl's impulse c dissipates (book.c): minus
+** its work on half the velocity the step began with, relative to the
+** reference velocity vref, -c . (v_r^n / 2 - vref); the impulse is kept
+** in a (sfi or sni) for book_finish, which adds -c . v_r^new / 2 */
 static double lose(const grid *g, int32_t sl, const double vref[DIM],
-                   const double post[DIM], const double c[DIM]) {
+                   const double c[DIM], double *const a[DIM]) {
   double mr = g->sm[sl], w = 0;
   int d;
   if (!(mr > 0)) return 0;
-  for (d = 0; d < DIM; d++)
-    w += 0.5 * (g->sp[d][sl] - mr * vref[d] + post[d]) * c[d];
+  for (d = 0; d < DIM; d++) {
+    w += (0.5 * g->sp[d][sl] - mr * vref[d]) * c[d];
+    a[d][sl] += c[d];
+  }
   return -w / mr;
 }
 
@@ -600,9 +601,8 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
                  double *const smom[DIM], int rec) {
   grid *g = &s->g;
   int32_t n = g->shared[k0];
-  /* each slot's correction, bonded (cb) and by contact (cc), and its
-  ** momentum relative to the reference */
-  double cb[MAXSLOTS][DIM], cc[MAXSLOTS][DIM], dpk[MAXSLOTS][DIM];
+  /* each slot's correction, bonded (cb) and by contact (cc) */
+  double cb[MAXSLOTS][DIM], cc[MAXSLOTS][DIM];
   double ct[MAXSLOTS][DIM]; /* the tangential part of cc: friction's */
   double sb[DIM] = {0}, sc[DIM] = {0}, st[DIM] = {0}, vref[DIM], M = g->m[n];
   double fric = 0, imp = 0, cn[DIM];
@@ -627,10 +627,10 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     sl = slots[k];
     mr = g->sm[sl];
     for (d = 0; d < DIM; d++)
-      cb[k][d] = cc[k][d] = ct[k][d] = dpk[k][d] = 0;
+      cb[k][d] = cc[k][d] = ct[k][d] = 0;
     if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || mr <= s->mcut) continue;
     for (d = 0; d < DIM; d++) {
-      dp[d] = dpk[k][d] = smom[d][sl] - mr * vref[d];
+      dp[d] = smom[d][sl] - mr * vref[d];
       dn += dp[d] * g->sn[d][sl];
     }
     /* the partner: the driven body, else the heaviest other field here;
@@ -709,17 +709,15 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     } else
       s->e.boundary += w;
     for (k = 0; k < ns; k++) {
-      double post[DIM];
       sl = slots[k];
       for (d = 0; d < DIM; d++) {
         double c = cb[k][d] + cc[k][d];
         smom[d][sl] += c;
         mom[d][n] += c;
-        post[d] = dpk[k][d] + c;
         cn[d] = cc[k][d] - ct[k][d];
       }
-      fric += lose(g, sl, vref, post, ct[k]);
-      imp += lose(g, sl, vref, post, cn);
+      fric += lose(g, sl, vref, ct[k], g->sfi);
+      imp += lose(g, sl, vref, cn, g->sni);
     }
     booked(s, k0, fric, cuts, imp, rec);
     if (s->heat) heat_contact(s, slots, ns, drv, fric);
@@ -729,16 +727,14 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   for (k = 0; k < ns; k++) {
     double f = g->sm[slots[k]] / M;
     sl = slots[k];
-    double post[DIM];
     for (d = 0; d < DIM; d++) {
       double b = cb[k][d] - f * sb[d], c = cc[k][d] - f * sc[d];
       smom[d][sl] += b + c;
-      post[d] = dpk[k][d] + b + c;
       ct[k][d] -= f * st[d];
       cn[d] = c - ct[k][d];
     }
-    fric += lose(g, sl, vref, post, ct[k]);
-    imp += lose(g, sl, vref, post, cn);
+    fric += lose(g, sl, vref, ct[k], g->sfi);
+    imp += lose(g, sl, vref, cn, g->sni);
   }
   booked(s, k0, fric, cuts, imp, rec);
   if (s->heat) heat_contact(s, slots, ns, -1, fric);

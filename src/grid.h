@@ -29,6 +29,9 @@ typedef struct grid {
   /* dense centre-of-mass field */
   double *m, *p[DIM], *f[DIM];
   double *q[DIM];      /* remapped momentum (MUSL) */
+  /* the friction (tangential) impulse the walls gave the node this step
+  ** (book.c books its work on the particles' motion) */
+  double *fi[DIM];
   int32_t *owner;      /* first field seen at the node, -1 if none */
   int32_t *head;       /* first slot of a shared node, -1 otherwise */
   /* sparse slots, one per (shared node, field) */
@@ -37,6 +40,8 @@ typedef struct grid {
   double *sm, *sp[DIM], *sf[DIM], *sq[DIM];
   double *sg[DIM];     /* mass gradient, for normals */
   double *sn[DIM];     /* outward unit normal of the field's body */
+  double *sfi[DIM], *sni[DIM]; /* friction impulses (contact and walls,
+                                  as fi) and contact's normal ones */
   double *sext;        /* reach of the field's material along its normal */
   /* bonds (bond.c), filled only in scenes with bonds: the field's
   ** mass-weighted bond strength, its volume gradient sum_p V_p grad S_ip

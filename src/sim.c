@@ -589,6 +589,7 @@ int sim_step(sim *s) {
   solve_velocity(s);
   if (s->transfer == TRANSFER_XPIC) xpic(s);
   prof_mark(s->prof, PROF_SOLVE);
+  if (!musl && s->heat) heat_finish(s); /* book_finish's velocities (vL) */
   g2p(s);
   prof_mark(s->prof, PROF_G2P);
   if (musl) {
@@ -597,10 +598,13 @@ int sim_step(sim *s) {
     ** scene holds them (boundary_remap says why and what it costs) */
     solve_remap(s); /* g2p mapped the updated momenta back */
     if (sim_wall_hold(s)) boundary_remap(s);
+    book_finish(s); /* on the remapped motion (book.c) */
+    if (s->heat) heat_finish(s); /* ... and its heat, before the move */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
     prof_mark(s->prof, PROF_REMAP);
   }
+  if (!musl) book_finish(s); /* no remap: on vL */
   if (s->temp_on) thermal(s);
   if (constitutive(s, usavg ? 0.5 * s->dt : s->dt)) return -1;
   /* after every other source of heat of the step */

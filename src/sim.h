@@ -314,6 +314,7 @@ void bond_gather(sim *s);      /* bond.c: strength, stress at shared slots */
 void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
 void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
                                   remapped velocity (MUSL) */
+void book_finish(sim *s);     /* book.c: impulses' work, second half */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */
 /* boundary.c: at every node where a wall acted this step, the normal

@@ -1,7 +1,10 @@
 # mvmpm - multi-velocity-field material point method
 #   make deps      install the Debian packages it needs (apt-get)
 #   make           build ./mvmpm
-#   make test      C unit tests, the REPL in tmux, Lua verification; ends "N passed, M failed"
+#   make test      the layers' check, C unit tests, the REPL in tmux, Lua
+#                  verification; ends "N passed, M failed"
+#   make layers    every include and every call between objects against the
+#                  layers of src/ (docs/architecture.md)
 #   make test SAN=1  the same under AddressSanitizer/UndefinedBehaviorSanitizer
 #   make test TSAN=1 the same under ThreadSanitizer (MVMPM_THREADS=2 for every run)
 #   make bench     speed figures (rates and ratios), never part of the tests
@@ -131,8 +134,13 @@ deps:
 
 unit: $(UNITBIN)
 
-test: $(BIN) $(UNITBIN)
+test: $(BIN) $(UNITBIN) layers
 	@bash tests/run.sh $(BIN) $(BUILD)/unit
+
+# every include and every call between objects against the layers'
+# table (tests/tools/layers.py, docs/architecture.md); make test runs it
+layers: $(OBJ)
+	@python3 tests/tools/layers.py $(BUILD)
 
 bench: $(BIN)
 	@bash bench/run.sh ./$(BIN)
@@ -230,7 +238,7 @@ study: $(BIN)
 
 FORCE:
 
-.PHONY: FORCE all deps deps-paraview unit test bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
+.PHONY: FORCE all deps deps-paraview unit test layers bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d) $(PICOBJ:.o=.d)
 
 # ParaView (Debian's paraview, installed by make deps-paraview; not a

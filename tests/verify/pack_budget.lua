@@ -1,5 +1,5 @@
 -- Contact: the energy budget of frictional grain packs, where the
--- friction work is booked on the particles' motion (src/book.c).
+-- friction work is booked on the particles' motion (src/core/book.c).
 --   1. A column of 12 elastic discs (R = 0.5, K = 400, G = 200, density
 --      1; 3 across, 4 high, every other row shifted) collapsing under
 --      gravity (g = 1) onto a floor with mu = 0.3 at the walls and between

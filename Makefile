@@ -1,7 +1,10 @@
 # mvmpm - multi-velocity-field material point method
 #   make deps      install the Debian packages it needs (apt-get)
 #   make           build ./mvmpm
-#   make test      C unit tests, the REPL in tmux, Lua verification; ends "N passed, M failed"
+#   make test      the layers' check, C unit tests, the REPL in tmux, Lua
+#                  verification; ends "N passed, M failed"
+#   make layers    every include and every call between objects against the
+#                  layers of src/ (docs/architecture.md)
 #   make test SAN=1  the same under AddressSanitizer/UndefinedBehaviorSanitizer
 #   make test TSAN=1 the same under ThreadSanitizer (MVMPM_THREADS=2 for every run)
 #   make bench     speed figures (rates and ratios), never part of the tests
@@ -65,12 +68,29 @@ BUILD  = build
 BIN    = mvmpm
 endif
 CFLAGS  = -std=c11 -pthread -D_POSIX_C_SOURCE=200809L $(WARN) $(OPT) -MMD -MP \
-          $(shell pkg-config --cflags $(PKGS) 2>/dev/null) $(EXTRA_CFLAGS)
+          $(EXTRA_CFLAGS)
 LDLIBS  = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm -pthread
 
-SRC     = $(wildcard src/*.c)
+# The layers (docs/architecture.md): each directory of src/ is compiled
+# with the include paths of the layers it may use and no others, so an
+# include that crosses a layer the wrong way does not compile.  The core
+# sees no Lua, HDF5 or rendering header; only io sees HDF5's, only lua
+# and app see Lua's.  make layers checks the same table by name.
+PC_LUA  = $(shell pkg-config --cflags lua5.4 2>/dev/null)
+PC_HDF5 = $(shell pkg-config --cflags hdf5 2>/dev/null)
+PC_APP  = $(shell pkg-config --cflags $(PKGS) 2>/dev/null)
+LAYERS  = core io render lua app
+INC_core   = -Isrc/core
+INC_io     = -Isrc/core -Isrc/io $(PC_HDF5)
+INC_render = -Isrc/core -Isrc/io -Isrc/render
+INC_lua    = -Isrc/core -Isrc/io -Isrc/render -Isrc/lua $(PC_LUA)
+INC_app    = -Isrc/core -Isrc/io -Isrc/render -Isrc/lua -Isrc/app $(PC_APP)
+# a source's layer: the directory under src/ of the object's stem
+layer   = $(firstword $(subst /, ,$(1)))
+
+SRC     = $(wildcard $(LAYERS:%=src/%/*.c))
 OBJ     = $(SRC:src/%.c=$(BUILD)/%.o)
-LIBOBJ  = $(filter-out $(BUILD)/main.o,$(OBJ))
+LIBOBJ  = $(filter-out $(BUILD)/app/main.o,$(OBJ))
 UNIT    = $(wildcard tests/unit/test_*.c)
 UNITBIN = $(UNIT:tests/unit/%.c=$(BUILD)/unit/%)
 
@@ -79,19 +99,21 @@ all: $(BIN)
 # the compiler and its flags, kept in the build directory: objects built
 # with others (make CC=clang, PORTABLE=1 after a tuned build) are rebuilt
 FLAGSTAMP = $(BUILD)/flags
-$(shell mkdir -p $(BUILD); echo '$(CC) $(CFLAGS)' | cmp -s - $(FLAGSTAMP) 2>/dev/null || echo '$(CC) $(CFLAGS)' > $(FLAGSTAMP))
+FLAGTEXT = $(CC) $(CFLAGS) $(foreach l,$(LAYERS),$(l): $(INC_$(l)))
+$(shell mkdir -p $(BUILD); echo '$(FLAGTEXT)' | cmp -s - $(FLAGSTAMP) 2>/dev/null || echo '$(FLAGTEXT)' > $(FLAGSTAMP))
 
 $(BIN): $(OBJ)
 	$(CC) $(CFLAGS) -o $@ $(OBJ) $(LDLIBS)
 
 $(BUILD)/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)
-	$(CC) $(CFLAGS) -c $< -o $@
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(INC_$(call layer,$*)) -c $< -o $@
 
-# the build's identity (src/version.c): git describe of this tree, else
+# the build's identity (src/lua/version.c): git describe of this tree, else
 # the release number, and the compiler and flags.  The header is
 # rewritten only when its text changes, so only version.o is rebuilt
-$(BUILD)/version.o $(BUILD)/pic/version.o: $(BUILD)/version_gen.h
-$(BUILD)/version.o $(BUILD)/pic/version.o: CFLAGS += -I$(BUILD)
+$(BUILD)/lua/version.o $(BUILD)/pic/lua/version.o: $(BUILD)/version_gen.h
+$(BUILD)/lua/version.o $(BUILD)/pic/lua/version.o: CFLAGS += -I$(BUILD)
 $(BUILD)/version_gen.h: FORCE | $(BUILD)
 	@v=$$(git describe --always --dirty 2>/dev/null) || v=; \
 	cc=$$($(CC) --version 2>/dev/null | head -1); \
@@ -100,8 +122,12 @@ $(BUILD)/version_gen.h: FORCE | $(BUILD)
 	  printf '#define MVMPM_BUILD "%s"\n' "$$(esc "$(CC) ($$cc) $(strip $(CFLAGS))")"; } >$@.new; \
 	if cmp -s $@.new $@; then rm -f $@.new; else mv $@.new $@; fi
 
+# the unit tests see every layer, but test_ckpt.c core's and io's only:
+# a checkpoint is written and read back with no Lua header in sight
+INC_unit = $(INC_app)
+$(BUILD)/unit/test_ckpt: INC_unit = $(INC_io)
 $(BUILD)/unit/%: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
-	$(CC) $(CFLAGS) -Isrc -o $@ $< $(LIBOBJ) $(LDLIBS)
+	$(CC) $(CFLAGS) $(INC_unit) -o $@ $< $(LIBOBJ) $(LDLIBS)
 
 $(BUILD) $(BUILD)/unit:
 	mkdir -p $@
@@ -112,8 +138,13 @@ deps:
 
 unit: $(UNITBIN)
 
-test: $(BIN) $(UNITBIN)
+test: $(BIN) $(UNITBIN) layers
 	@bash tests/run.sh $(BIN) $(BUILD)/unit
+
+# every include and every call between objects against the layers'
+# table (tests/tools/layers.py, docs/architecture.md); make test runs it
+layers: $(OBJ)
+	@python3 tests/tools/layers.py $(BUILD)
 
 bench: $(BIN)
 	@bash bench/run.sh ./$(BIN)
@@ -147,7 +178,8 @@ clean:
 PICOBJ = $(LIBOBJ:$(BUILD)/%.o=$(BUILD)/pic/%.o)
 LUALIBS = $(shell pkg-config --libs hdf5 libedit zlib 2>/dev/null) -lm -pthread
 $(BUILD)/pic/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)/pic
-	$(CC) $(CFLAGS) -fPIC -c $< -o $@
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) $(INC_$(call layer,$*)) -fPIC -c $< -o $@
 $(BUILD)/pic:
 	mkdir -p $@
 $(BUILD)/mvmpm.so: $(PICOBJ)
@@ -182,7 +214,7 @@ fuzz:
 	@bash tests/fuzz/run.sh build-fuzz/fuzz_scene $(FUZZ_SECONDS)
 
 build-fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(LIBOBJ)
-	$(CC) $(CFLAGS) -fsanitize=fuzzer -Isrc -o $@ $< $(LIBOBJ) $(LDLIBS)
+	$(CC) $(CFLAGS) -fsanitize=fuzzer $(INC_app) -o $@ $< $(LIBOBJ) $(LDLIBS)
 
 # many random scenes under the sanitizers (make test runs 20 seeds)
 RANDOM_SEEDS ?= 1-500
@@ -203,14 +235,15 @@ figures: $(BIN)
 # the accuracy-cost study (docs/accuracy.md): each case over its grid of
 # settings, one after the other (timings are taken one run at a time);
 # STUDY_QUICK=1 for a smoke run, STUDY_REPEATS=R for the repeats (default 3)
-STUDIES = bar bar_ppc_cfl disc block concentric concentric_onset bounce_friction bounce roll roll_slab thermal_explosion
+STUDIES = bar bar_ppc_cfl disc block concentric concentric_onset bounce_friction bounce roll roll_slab \
+          grain_budget piston_pack thermal_explosion
 study: $(BIN)
 	@mkdir -p out/study docs/figures
 	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'
 
 FORCE:
 
-.PHONY: FORCE all deps deps-paraview unit test bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
+.PHONY: FORCE all deps deps-paraview unit test layers bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
 -include $(OBJ:.o=.d) $(UNITBIN:=.d) $(PICOBJ:.o=.d)
 
 # ParaView (Debian's paraview, installed by make deps-paraview; not a
@@ -273,6 +306,9 @@ shear: $(BIN)
 
 .PHONY: shear
 
-# the compile flags without the dependency files (tests compile with them)
+# the compile flags without the dependency files (tests compile with
+# them): LAYER=core|io|render|lua|app gives that layer's include paths,
+# the default is app's (every layer)
+LAYER ?= app
 print-cflags:
-	@echo $(filter-out -MMD -MP,$(CFLAGS))
+	@echo $(filter-out -MMD -MP,$(CFLAGS)) $(INC_$(LAYER))

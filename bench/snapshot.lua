@@ -2,7 +2,7 @@
 -- of 3228 particles, written N times into a scratch directory (removed
 -- afterwards), CPU (os.clock) and wall time per snapshot.  The write is
 -- the whole durable path: the file built in memory, its checksum block,
--- write, fsync and rename (src/out_h5.c).  SNAP_DIR picks the directory
+-- write, fsync and rename (src/io/out_h5.c).  SNAP_DIR picks the directory
 -- (e.g. /dev/shm for tmpfs; default a fresh one under /tmp).
 local mvmpm = require "mvmpm"
 local quick = os.getenv("BENCH_QUICK") == "1"

@@ -19,6 +19,8 @@ local P = mvmpm.params {
   b = 0.4,             -- outer radius
   t_end = 24,
   shape = "linear",
+  traction = "mixture", -- the bond test's traction: "mixture" or "fit"
+  bond_length = 0,     -- with "fit": the length it is averaged over
 }
 
 local sim = mvmpm.sim {
@@ -27,6 +29,8 @@ local sim = mvmpm.sim {
   shape = P.shape,
   t_end = P.t_end,
   sides = "free",
+  bond_traction = P.traction,
+  bond_length = P.bond_length,
 }
 local core = mvmpm.elastic {K = 1, G = 0.5, density = 1, alpha = P.alpha, name = "core"}
 local shell = mvmpm.elastic {K = 1, G = 0.5, density = 1, alpha = 0, name = "shell"}

@@ -190,7 +190,7 @@ local mon = {strain = {}, tau = {}, debond = {}, work = {}, kinetic = {}, stored
 local acc, nacc, reported = 0, 0, false
 
 -- at each record: the invariants (no NaN, det F > 0, no particle
--- buried a cell deep in another body: sim:overlap, src/diag_overlap.c)
+-- buried a cell deep in another body: sim:overlap, src/core/diag_overlap.c)
 local function sample(s, e, g, tau)
   local n_ov, depth, ob, oh = s:overlap()
   if e.total ~= e.total or tau ~= tau then mon.bad[#mon.bad + 1] = string.format("NaN at strain %.4f", g) end

@@ -4,7 +4,7 @@
     h5sum.py check FILE...   0 when every FILE's block matches its bytes
     h5sum.py seal FILE...    write the block for the bytes as they are now
 
-The block (docs/stability.md, src/h5sum.h): the first 512 bytes, an
+The block (docs/stability.md, src/io/h5sum.h): the first 512 bytes, an
 HDF5 user block, hold
     mvmpm checksum 1: blake2b-256 of the NNNNNNNNNNNNNNNNNNNN bytes after the first 512:\\n
     <64 hex digits>\\n

@@ -23,7 +23,11 @@ local function profile(sim, dT)
 end
 
 -- the shape set here: the numbers below depend on it
-local sim = mvmpm.load("scenarios/concentric_debond.lua", {strength = sb, t_end = 30, shape = "linear"})
+-- the bond test's traction: both sides' stress profiles fitted across the
+-- interface and averaged over 0.12 along it (sim.bond_traction = "fit")
+local fit = {traction = "fit", bond_length = 0.12}
+local sim = mvmpm.load("scenarios/concentric_debond.lua",
+  {strength = sb, t_end = 30, shape = "linear", traction = fit.traction, bond_length = fit.bond_length})
 local first, gone
 sim:every {steps = 1, fn = function(s)
   local e = s:energy()
@@ -44,35 +48,56 @@ V.case "debonding onset at three resolutions (linear hats, then uGIMP)"
 sim:run(20)
 local dTc = sb / (unit * alpha)
 V.info("analytic onset |dT| = strength / (s per unit |alpha dT|)", dTc)
--- the onset |dT| over the analytic one, on a fresh scene run to its first cut
-local function onset(cells, shape)
+-- the disc's in-plane stress over s, its time mean from t = 20 on
+local function relaxed(sm)
+  local sum, n = 0, 0
+  sm:every {time = 0.1, fn = function(x)
+    if x.t < 20 then return end
+    local st, body = x:particles("stress"), x:particles("body")
+    local d1, nd = 0, 0
+    for i = 1, #body do
+      if body[i] ~= 2 then d1, nd = d1 + 0.5 * (st.xx[i] + st.yy[i]), nd + 1 end
+    end
+    sum, n = sum + d1 / nd / (unit * alpha * rate * x.t), n + 1
+  end}
+  return function() return sum / n end
+end
+-- the onset |dT| over the analytic one, on a fresh scene run to its first
+-- cut; with a list, the scene goes on to t = 24 and the disc's mean
+-- in-plane stress over t = 20..24 is added to it
+local relax = {}
+local function onset(cells, shape, rel)
   local sm = mvmpm.load("scenarios/concentric_debond.lua",
-    {strength = sb, t_end = 30, cells = cells, shape = shape})
-  local t0
+    {strength = sb, t_end = 30, cells = cells, shape = shape,
+     traction = fit.traction, bond_length = fit.bond_length})
+  local t0, mean = nil, rel and relaxed(sm)
   sm:every {steps = 1, fn = function(x)
     if not t0 and x:energy().debonded > 0 then t0 = x.t end
   end}
   while not t0 and sm.t < 1.5 * dTc / rate do sm:run(sm.t + 0.5) end
+  if rel then
+    sm:run(24)
+    rel[#rel + 1] = {cells, mean()}
+  end
   return t0 and rate * t0 / dTc or 0 / 0
 end
-local res = {{25, onset(25, "linear")}, {35, onset(35, "linear")}, {50, rate * first / dTc}}
+local res = {{25, onset(25, "linear", relax)}, {35, onset(35, "linear", relax)}, {50, rate * first / dTc}}
 local err = {}
 for i, r in ipairs(res) do
   err[i] = math.abs(r[2] - 1)
   V.info(string.format("%d cells: onset / analytic", r[1]), r[2])
-  -- an exactly uniform Lame disc must not let go before its strength:
-  -- the old force-over-area rule cut at 0.914, 0.896, 0.892 (25, 50, 100)
-  V.above(string.format("%d cells: onset / analytic (no early cut)", r[1]), r[2], 0.97)
-  V.below(string.format("%d cells: |onset / analytic - 1|", r[1]), err[i], 0.08)
+  -- target: within 3 % at every resolution (with the mixture of the
+  -- particles' stresses it was 1.065, 1.059, 1.007, 0.964 at 25, 35, 50,
+  -- 100 cells: docs/verification.md)
+  V.below(string.format("%d cells: |onset / analytic - 1|", r[1]), err[i], 0.03)
 end
--- The target is 3 % at every resolution with a clear order; measured
--- 6.5 %, 5.9 %, 0.8 % (and 3.6 % early at 100 cells, studies/concentric.lua):
--- not met at 25 and 35 cells, and no steady order (docs/verification.md).
+-- the errors are 0.6 %, 0.2 %, 0.5 %: within the target, but with no
+-- steady order between 35 and 50 cells (docs/verification.md)
 V.info("observed order, 25 -> 35 cells", math.log(err[1] / err[2]) / math.log(35 / 25))
 V.info("observed order, 35 -> 50 cells", math.log(err[2] / err[3]) / math.log(50 / 35))
-V.info("onset within 3 % at all three (1 yes, 0 no)",
-  (err[1] <= 0.03 and err[2] <= 0.03 and err[3] <= 0.03) and 1 or 0)
-V.info("uGIMP, 25 cells: onset / analytic", onset(25, "gimp"))
+-- uGIMP: 1.055 / 1.006 / 0.999 at 25 / 35 / 50 cells (the study): the
+-- target is missed at 25 cells
+V.info("uGIMP, 25 cells: onset / analytic (target 3 %: missed)", onset(25, "gimp"))
 -- The load is uniform along the interface (the exact solution lets go
 -- everywhere at once): what spreads the release over time is only the
 -- traction's residual scatter, so the "front" here is no crack tip.  The
@@ -99,17 +124,25 @@ do
     n = n + 1
   end}
   sim:run(24)
-  -- The released gap is (1 + nu) alpha dT a ~ 0.08 cells, less than the
-  -- contact's separation check resolves (particle squares of half a
-  -- cell): the annulus rings against the disc instead of clear of it,
-  -- and the disc's in-plane stress swings about a compressive mean
-  -- instead of zero.  Reported, with the annulus's release asserted.
+  -- The released gap is about a tenth of a cell, less than the contact's
+  -- separation check resolves (particle squares of half a cell).  Judged
+  -- by that check (bond_release = "contact") the annulus rang against the
+  -- disc and contact rectified the ringing into a squeeze: the disc's mean
+  -- in-plane stress was -0.67 s and sigma_zz 0.80 of the free value, the
+  -- residual -6.7 % of the cooling's work.  With the opening measured from
+  -- the released particles' displacements (the default, "open") the disc
+  -- relaxes: the target is |mean in-plane stress| < 0.1 s.
   V.below("annulus: mean |in-plane stress| / s (bonded: about s)", ann / n, 0.4)
-  V.info("disc: mean in-plane stress / s (free disc: 0; bonded: +1)", disc / n)
-  V.info("disc: mean sigma_zz / (-E alpha dT) (free disc: 1)", zz / n)
+  relax[#relax + 1] = {50, disc / n}
+  for _, r in ipairs(relax) do
+    V.below(string.format("%d cells: disc |mean in-plane stress| / s (free: 0; bonded: +1)", r[1]),
+      math.abs(r[2]), 0.1)
+  end
+  V.below("disc: |mean sigma_zz / (-E alpha dT) - 1| (free disc: 0)", math.abs(zz / n - 1), 0.05)
   V.below("bonded area left (of 2 pi a = 1.257)", sim:energy().bonded_area, 0)
   local e = sim:energy()
-  V.info("energy residual / work of the cooling, linear hats, t = 24", e.residual / e.thermal_work)
+  V.below("|energy residual| / work of the cooling, linear hats, t = 24",
+    math.abs(e.residual / e.thermal_work), 0.03)
 end
 
 V.case "energy budget through the release, quadratic B-splines"

@@ -1,4 +1,4 @@
--- Heat (src/heat.c, src/conduct.c): sources, the temperature update and
+-- Heat (src/core/heat.c, src/core/conduct.c): sources, the temperature update and
 -- conduction (docs/verification.md, "Heat").
 --   (a) friction heat: a block thrown along a slab body (contact friction,
 --       split 0.3 / 0.7) and along a frictional floor: the particles'

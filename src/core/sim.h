@@ -40,6 +40,10 @@ enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
 ** for both sides, or the least-squares plane between the particles */
 enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
                     NORMALS_PLANE };
+/* contact where a bond was cut (contact.c): only once the opening measured
+** from the sides' displacements since the cut closes, or by the separation
+** check like any contact */
+enum release_kind { RELEASE_OPEN, RELEASE_CONTACT };
 /* the widest window the normals may take (cells each way) */
 #define NORMAL_WINDOW_MAX 4
 #define NSIDES (2 * DIM)
@@ -143,6 +147,16 @@ typedef struct sim {
   unsigned char *flaw; /* per field: 1 if some override names it */
   double bond_default; /* bond cap where no law says otherwise (INFINITY) */
   int fbond;         /* particle field "bond" (strength), -1: no bonds */
+  int frel;          /* particle field "release": 1 once the particle's bond
+                        was cut, then its position then (bond.c) */
+  int release;       /* enum release_kind: contact across a released bond */
+  int bond_fit;      /* bond traction from the sides' fitted profiles */
+  double bond_length; /* ... averaged over this length along the interface */
+  /* per node, the bond traction's sums over the particles near, not at,
+  ** an interface (bond.c: BF_* arrays of nnodes each), and the field they
+  ** belong to */
+  double *bfit;
+  int32_t *bffield;
   size_t ncut;       /* interface slots debonded in the last step */
   size_t ncut_total; /* ... since the start */
   double bond_area;  /* bonded interface area in the last step (length in
@@ -291,10 +305,16 @@ void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
 int contact_prepare(sim *s);   /* contact.c: room for its records */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
+/* bond fit sums: weight, first and second moments of the offset from
+** the node, stress (xx, xy, yy), stress times offset (a * DIM + c) */
+enum { BF_W, BF_U = 1, BF_UU = 1 + DIM, BF_S = 1 + DIM + DIM * (DIM + 1) / 2,
+       BF_SU = BF_S + DIM * (DIM + 1) / 2,
+       BF_N = BF_SU + DIM * DIM * (DIM + 1) / 2 };
 void bond_gather(sim *s);      /* bond.c: strength, stress at shared slots */
 void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
 void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
                                   remapped velocity (MUSL) */
+void book_finish(sim *s);     /* book.c: impulses' work, second half */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */
 /* boundary.c: at every node where a wall acted this step, the normal

@@ -29,6 +29,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->faff = -1;
   s->t_stop = INFINITY;
   s->fbond = -1;
+  s->frel = -1;
   s->mcut_rel = 1e-9;
   s->sort_every = 20;
   s->ppc = ppc;
@@ -81,6 +82,8 @@ void sim_free(sim *s) {
   free(s->wext);
   free(s->crec);
   free(s->cbody);
+  free(s->bfit);
+  free(s->bffield);
   free(s->prof);
   heat_free(s);
   memset(s, 0, sizeof *s);
@@ -188,44 +191,6 @@ int sim_add_body(sim *s, const char *name, int32_t mat, int32_t field) {
   return s->nbody++;
 }
 
-static int lawcmp(const void *x, const void *y) {
-  const pairlaw *a = x, *b = y;
-  if (a->a != b->a) return a->a < b->a ? -1 : 1;
-  return (a->b > b->b) - (a->b < b->b);
-}
-
-int sim_set_law(sim *s, int32_t a, int32_t b, double mu, double bond) {
-  pairlaw key;
-  int k;
-  if (a > b) { int32_t t = a; a = b; b = t; }
-  for (k = 0; k < s->nlaw; k++)
-    if (s->laws[k].a == a && s->laws[k].b == b) {
-      s->laws[k].mu = mu;
-      s->laws[k].bond = bond;
-      return 0;
-    }
-  if (s->nlaw == s->lawcap) {
-    int cap = s->lawcap ? 2 * s->lawcap : 16;
-    pairlaw *p = realloc(s->laws, cap * sizeof *p);
-    if (!p) return -1;
-    s->laws = p;
-    s->lawcap = cap;
-  }
-  key.a = a; key.b = b; key.mu = mu; key.bond = bond;
-  s->laws[s->nlaw++] = key;
-  qsort(s->laws, s->nlaw, sizeof *s->laws, lawcmp);
-  s->flaw[a] = s->flaw[b] = 1;
-  return 0;
-}
-
-const pairlaw *sim_law_of(const sim *s, int32_t a, int32_t b) {
-  pairlaw key;
-  if (b < 0 || !(s->flaw[a] && s->flaw[b])) return NULL;
-  if (a > b) { int32_t t = a; a = b; b = t; }
-  key.a = a; key.b = b;
-  return bsearch(&key, s->laws, s->nlaw, sizeof *s->laws, lawcmp);
-}
-
 const char *sim_advice(const sim *s) {
   int k, walls = 0;
   for (k = 0; k < NSIDES; k++)
@@ -275,11 +240,6 @@ const char *sim_budget_advice(const sim *s) {
          "energy budget with friction)";
 }
 
-double sim_law(const sim *s, int32_t a, int32_t b) {
-  const pairlaw *l = sim_law_of(s, a, b);
-  return l ? l->mu : s->mu_default;
-}
-
 int sim_enable_apic(sim *s) {
   s->transfer = TRANSFER_APIC;
   if (s->faff < 0) {
@@ -299,7 +259,15 @@ int sim_enable_bonds(sim *s) {
   if (s->fbond < 0)
     s->fbond = particles_add_field(&s->ps, "bond", 1, PF_DOUBLE, "M/(L T^2)",
                                    PF_OUTPUT | PF_RESTART);
-  return s->fbond;
+  if (s->fbond >= 0 && s->frel < 0)
+    s->frel = particles_add_field(&s->ps, "release", DIM + 1, PF_DOUBLE, "L",
+                                  PF_RESTART);
+  if (s->frel >= 0 && s->bond_fit && !s->bfit) { /* only for bond_traction = "fit" */
+    s->bfit = malloc(BF_N * s->g.nnodes * sizeof *s->bfit);
+    s->bffield = malloc(s->g.nnodes * sizeof *s->bffield);
+    if (!s->bfit || !s->bffield) return -1;
+  }
+  return s->frel < 0 ? -1 : s->fbond;
 }
 
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],
@@ -578,6 +546,7 @@ int sim_step(sim *s) {
   solve_velocity(s);
   if (s->transfer == TRANSFER_XPIC) xpic(s);
   prof_mark(s->prof, PROF_SOLVE);
+  if (!musl && s->heat) heat_finish(s); /* book_finish's velocities (vL) */
   g2p(s);
   prof_mark(s->prof, PROF_G2P);
   if (musl) {
@@ -586,10 +555,13 @@ int sim_step(sim *s) {
     ** scene holds them (boundary_remap says why and what it costs) */
     solve_remap(s); /* g2p mapped the updated momenta back */
     if (sim_wall_hold(s)) boundary_remap(s);
+    book_finish(s); /* on the remapped motion (book.c) */
+    if (s->heat) heat_finish(s); /* ... and its heat, before the move */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
     prof_mark(s->prof, PROF_REMAP);
   }
+  if (!musl) book_finish(s); /* no remap: on vL */
   if (s->temp_on) thermal(s);
   if (constitutive(s, usavg ? 0.5 * s->dt : s->dt)) return -1;
   /* after every other source of heat of the step */

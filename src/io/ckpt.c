@@ -1,11 +1,13 @@
 /*
-** ckpt.c - checkpoints (the file is described in ckpt.h).
+** ckpt.c - checkpoints of the simulation's state (the file is described
+** in ckpt.h); the run's part, which lives in Lua, is lckpt.c's.
 **
 ** One function, visit, walks every number of the state a step depends
 ** on; writing gathers them into named lists, applying looks each name up
 ** and assigns it back.  Both directions are the same code, so a number
 ** cannot be saved and then forgotten on restart, and a checkpoint made
 ** by a build or a scene with other state fails by name, not silently.
+** The caller's numbers go through the same lists (ckpt_more, ckv_*).
 */
 #include <dirent.h>
 #include <errno.h>
@@ -19,11 +21,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "ckpt.h"
-#include "lauxlib.h"
-#include "lsim.h"
 #include "heat.h"
-#include "lstate.h"
-#include "sandbox.h"
 #include "pcheck.h"
 
 /* a list of named numbers, reals or integers */
@@ -36,12 +34,12 @@ typedef struct vlist {
   char *names;            /* applying: the '\n'-separated names, split */
 } vlist;
 
-typedef struct ckv {
+struct ckv {
   int apply;              /* 0: gather from the state, 1: assign to it */
   vlist re, in;
   char err[512];
   int failed;
-} ckv;
+};
 
 static int vfail(ckv *v, const char *fmt, ...) {
   va_list ap;
@@ -171,6 +169,29 @@ static void vvec(ckv *v, const char *pre, const char *name, double *x, int n) {
   }
 }
 
+/* the same lists for the caller's numbers (ckpt.h) */
+int ckv_applying(const ckv *v) { return v->apply; }
+
+int ckv_failed(const ckv *v) { return v->failed; }
+
+int ckv_fail(ckv *v, const char *fmt, ...) {
+  va_list ap;
+  if (v->failed) return -1;
+  v->failed = 1;
+  va_start(ap, fmt);
+  vsnprintf(v->err, sizeof v->err, fmt, ap);
+  va_end(ap);
+  return -1;
+}
+
+void ckv_real(ckv *v, const char *name, double *p) { vreal(v, name, p); }
+
+void ckv_int(ckv *v, const char *name, int64_t *p) { vint(v, name, p); }
+
+void ckv_same(ckv *v, const char *name, int64_t have, const char *what) {
+  vsame(v, name, have, what);
+}
+
 static const char *const side_names[] = {"left", "right", "bottom", "top",
                                          "back", "front"};
 
@@ -291,50 +312,6 @@ static void visit_sim(ckv *v, sim *s) {
   }
 }
 
-/* the run's side: output and checkpoint schedule, callbacks' next times */
-static void visit_run(ckv *v, lua_State *L, int simidx, lsim *ls,
-                      int64_t csv_bytes) {
-  lua_Integer k, n;
-  char nm[64];
-  /* read before the scene loads (ckpt_sandboxed); applying only uses it */
-  int64_t sandboxed = sandbox_on(L);
-  vint(v, "run.sandbox", &sandboxed);
-  vreal(v, "run.out_every", &ls->out_every);
-  vreal(v, "run.out_next", &ls->out_next);
-  VI(v, "run.csv_every", ls->csv_every, long);
-  VI(v, "run.nsnap", ls->nsnap, int);
-  vreal(v, "run.ck_every", &ls->ck_every);
-  vreal(v, "run.ck_next", &ls->ck_next);
-  VI(v, "run.ck_count", ls->ck_count, int);
-  vint(v, "run.csv_bytes", &csv_bytes);
-  if (v->apply) ls->csv_resume = (long)csv_bytes;
-  lsim_uv(L, simidx, "every");
-  n = (lua_Integer)lua_rawlen(L, -1);
-  vsame(v, "run.nevery", n, "sim:every callbacks");
-  for (k = 1; k <= n && !v->failed; k++) {
-    int bytime;
-    lua_rawgeti(L, -1, k);
-    bytime = lua_getfield(L, -1, "time") != LUA_TNIL;
-    lua_pop(L, 1);
-    snprintf(nm, sizeof nm, "every%d.bytime", (int)k);
-    vsame(v, nm, bytime, "as its kind (1 time, 0 steps)");
-    snprintf(nm, sizeof nm, "every%d.next", (int)k);
-    lua_getfield(L, -1, "next");
-    if (bytime) {
-      double x = lua_tonumber(L, -1);
-      vreal(v, nm, &x);
-      lua_pushnumber(L, x);
-    } else {
-      int64_t x = (int64_t)lua_tointeger(L, -1);
-      vint(v, nm, &x);
-      lua_pushinteger(L, (lua_Integer)x);
-    }
-    lua_setfield(L, -3, "next");
-    lua_pop(L, 2);
-  }
-  lua_pop(L, 1);
-}
-
 /*
 ** {======================================================
 ** Writing
@@ -367,48 +344,7 @@ static void names(sbuf *s, const vlist *l) {
   }
 }
 
-static int strcmpp(const void *a, const void *b) {
-  return strcmp(*(const char *const *)a, *(const char *const *)b);
-}
-
-/* the overrides in force, "name=value" lines in name order */
-static void params(lua_State *L, sbuf *s);
-
-char *ckpt_overrides(lua_State *L) {
-  sbuf s = {0};
-  params(L, &s);
-  if (s.bad) { free(s.b); return NULL; }
-  if (!s.b) return calloc(1, 1);
-  return s.b;
-}
-
-static void params(lua_State *L, sbuf *s) {
-  char *line[256];
-  int n = 0, k;
-  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides");
-  if (lua_istable(L, -1)) {
-    lua_pushnil(L);
-    while (lua_next(L, -2)) {
-      if (lua_type(L, -2) == LUA_TSTRING) {
-        size_t kl, vl;
-        const char *key = lua_tolstring(L, -2, &kl);
-        const char *val = luaL_tolstring(L, -1, &vl);
-        if (n == 256 || !(line[n] = malloc(kl + vl + 3))) s->bad = 1;
-        else snprintf(line[n++], kl + vl + 3, "%s=%s\n", key, val);
-        lua_pop(L, 1);
-      }
-      lua_pop(L, 1);
-    }
-  }
-  lua_pop(L, 1);
-  qsort(line, (size_t)n, sizeof *line, strcmpp);
-  for (k = 0; k < n; k++) {
-    sadd(s, line[k], strlen(line[k]));
-    free(line[k]);
-  }
-}
-
-static int syncdir(const char *dir) {
+int ckpt_syncdir(const char *dir) {
   int fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC), r;
   if (fd < 0) return -1;
   r = fsync(fd);
@@ -416,41 +352,19 @@ static int syncdir(const char *dir) {
   return r;
 }
 
-static void ckname(char *buf, size_t len, const char *dir, int k) {
+void ckpt_name(char *buf, size_t len, const char *dir, int k) {
   snprintf(buf, len, "%s/checkpoint_%06d.h5", dir, k);
 }
 
-void ckpt_write(lua_State *L, int simidx) {
-  lsim *ls = lsim_check(L, simidx);
-  sim *s = &ls->s;
+int ckpt_save(const char *path, sim *s, const ckpt_more *more, h5blob *b,
+              h5meta *meta, const h5prov *prov, int nomem, char *err,
+              size_t errlen) {
   ckv v;
-  sbuf rn = {0}, in = {0}, fl = {0}, sf = {0}, pa = {0};
-  double *st = NULL;
-  int64_t *sn = NULL;
-  h5blob b[CB_N];
-  h5meta meta;
-  h5prov prov;
-  h5frame fr;
-  char path[1100], old[1100], err[1024], abs_scene[PATH_MAX];
-  const char *scene, *source, *state = NULL;
-  size_t statelen = 0;
-  int k, r, top = lua_gettop(L);
-  long csv = run_sync(L, ls);
-  simidx = lua_absindex(L, simidx);
-  /* first what may raise an error (a function in the state), before
-  ** anything is allocated */
-  lsim_uv(L, simidx, "state");
-  if (lua_istable(L, -1)) {
-    lstate_save(L, -1);
-    state = lua_tolstring(L, -1, &statelen);
-  }
-  ckname(path, sizeof path, ls->outdir, ls->ck_count + 1);
-  sandbox_file(L, path, "checkpoint"); /* no link followed (sandbox.h) */
+  sbuf rn = {0}, in = {0}, fl = {0};
+  int k, r;
   memset(&v, 0, sizeof v);
-  memset(&fr, 0, sizeof fr);
-  ls->ck_count++; /* what a restart continues from */
   visit_sim(&v, s);
-  visit_run(&v, L, simidx, ls, csv);
+  if (more && more->visit) more->visit(&v, more->ud);
   names(&rn, &v.re);
   names(&in, &v.in);
   for (k = 0; k < s->ps.nfields; k++)
@@ -458,78 +372,25 @@ void ckpt_write(lua_State *L, int simidx) {
       sadd(&fl, s->ps.fields[k].name, strlen(s->ps.fields[k].name));
       sadd(&fl, "\n", 1);
     }
-  st = malloc((ls->nsnap + 1) * sizeof *st);
-  sn = malloc((ls->nsnap + 1) * sizeof *sn);
-  for (k = 0; st && sn && k < ls->nsnap; k++) {
-    st[k] = ls->snaps[k].time;
-    sn[k] = (int64_t)ls->snaps[k].n;
-    sadd(&sf, ls->snaps[k].file, strlen(ls->snaps[k].file));
-    sadd(&sf, "\n", 1);
-  }
-  params(L, &pa);
-  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.scene");
-  scene = lua_isstring(L, -1) ? lua_tostring(L, -1) : ls->scene;
-  /* stored absolute, so the run continues from any directory */
-  if (scene[0] != '/' && getcwd(abs_scene, sizeof abs_scene) &&
-      strlen(abs_scene) + strlen(scene) + 2 <= sizeof abs_scene) {
-    strcat(abs_scene, "/");
-    strcat(abs_scene, scene);
-    scene = abs_scene;
-  }
-  lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
-  source = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
-  if (v.failed || rn.bad || in.bad || fl.bad || sf.bad || pa.bad || !st || !sn ||
-      run_frame(s, &fr)) {
-    snprintf(err, sizeof err, "checkpoint: %s", v.failed ? v.err : "out of memory");
+  if (v.failed || rn.bad || in.bad || fl.bad || nomem) {
+    snprintf(err, errlen, "checkpoint: %s", v.failed ? v.err : "out of memory");
     r = -1;
   } else {
     b[CB_REALN] = (h5blob){"real_names", H5B_U8, rn.n, rn.b};
     b[CB_REAL] = (h5blob){"real", H5B_F64, v.re.n, v.re.r};
     b[CB_INTN] = (h5blob){"int_names", H5B_U8, in.n, in.b};
     b[CB_INT] = (h5blob){"int", H5B_I64, v.in.n, v.in.i};
-    b[CB_SNAPF] = (h5blob){"snap_files", H5B_U8, sf.n, sf.b};
-    b[CB_SNAPT] = (h5blob){"snap_time", H5B_F64, (size_t)ls->nsnap, st};
-    b[CB_SNAPN] = (h5blob){"snap_n", H5B_I64, (size_t)ls->nsnap, sn};
-    b[CB_PARAMS] = (h5blob){"params", H5B_U8, pa.n, pa.b};
-    b[CB_SCENE] = (h5blob){"scene", H5B_U8, strlen(scene), (void *)scene};
-    b[CB_SOURCE] = (h5blob){"source", H5B_U8, strlen(source), (void *)source};
-    b[CB_STATE] = (h5blob){"lua_state", H5B_U8, statelen, (void *)state};
     b[CB_FIELDS] = (h5blob){"fields", H5B_U8, fl.n, fl.b};
-    memset(&meta, 0, sizeof meta);
-    meta.time = s->t;
-    meta.step = s->step;
-    meta.cell = s->g.h;
-    meta.units = ls->units;
-    meta.scene = scene;
-    run_provenance(L, &prov);
-    meta.frame = &fr;
-    ckname(path, sizeof path, ls->outdir, ls->ck_count);
-    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, &meta,
-                           &prov, b, CB_N, err, sizeof err);
-    lua_pop(L, 3);
-    if (r == 0 && syncdir(ls->outdir)) {
-      snprintf(err, sizeof err, "%s: cannot sync the directory (%s)",
-               ls->outdir, strerror(errno));
-      r = -1;
-    }
+    meta->time = s->t;
+    meta->step = s->step;
+    meta->cell = s->g.h;
+    r = out_h5_write_state(path, CKPT_FORMAT, &s->ps, PF_RESTART, meta,
+                           prov, b, CB_N, err, errlen);
   }
   vlist_free(&v.re, 1);
   vlist_free(&v.in, 1);
-  free(rn.b); free(in.b); free(fl.b); free(sf.b); free(pa.b);
-  free(st); free(sn);
-  out_h5_frame_free(&fr);
-  lua_settop(L, top);
-  if (r) {
-    ls->ck_count--;
-    luaL_error(L, "%s", err);
-  }
-  snprintf(ls->ck_last, sizeof ls->ck_last, "%s", path);
-  /* keep the newest two: the older of them is the fallback if the newest
-  ** turns out unreadable */
-  if (ls->ck_count > 2) {
-    ckname(old, sizeof old, ls->outdir, ls->ck_count - 2);
-    remove(old);
-  }
+  free(rn.b); free(in.b); free(fl.b);
+  return r;
 }
 
 /* }====================================================== */
@@ -550,9 +411,14 @@ static int vrange(ckv *v, const char *name, double x, double lo, double hi,
                "%.17g]", name, x, open ? '(' : '[', lo, hi);
 }
 
+int ckv_range(ckv *v, const char *name, double x, double lo, double hi,
+              int open) {
+  return vrange(v, name, x, lo, hi, open);
+}
+
 /* the state's numbers in the ranges the engine keeps them in (finite
 ** already: vreal); n is the checkpoint's particle count */
-static void state_ok(ckv *v, const sim *s, const lsim *ls, size_t n) {
+static void state_ok(ckv *v, const sim *s, size_t n) {
   const double big = INFINITY, cnt = (double)INT64_MAX;
   int k;
   vrange(v, "t_end", s->t_end, 0, big, 1);
@@ -588,12 +454,6 @@ static void state_ok(ckv *v, const sim *s, const lsim *ls, size_t n) {
     if (vrange(v, "law mu", s->laws[k].mu, 0, big, 0) ||
         vrange(v, "law bond", s->laws[k].bond, 0, big, 0))
       return;
-  vrange(v, "run.out_every", ls->out_every, 0, big, 0);
-  vrange(v, "run.csv_every", (double)ls->csv_every, 0, big, 0);
-  vrange(v, "run.nsnap", ls->nsnap, 0, INT32_MAX, 0);
-  vrange(v, "run.ck_every", ls->ck_every, 0, big, 0);
-  vrange(v, "run.ck_count", ls->ck_count, 0, 999999, 0);
-  vrange(v, "run.csv_bytes", (double)ls->csv_resume, -1, cnt, 0);
 }
 
 static const char *const blobnames[CB_N] = {"real_names", "real",
@@ -705,47 +565,20 @@ static int copy_particles(ckv *v, sim *s, const ckpt *c) {
   return 0;
 }
 
-static int copy_snaps(ckv *v, lsim *ls, const ckpt *c) {
-  char *files = ckpt_string(c, CB_SNAPF), *p, *q;
-  int k = 0, n = ls->nsnap;
-  if (n < 0 || (size_t)n != c->b[CB_SNAPT].n || (size_t)n != c->b[CB_SNAPN].n) {
-    free(files);
-    return vfail(v, "its XDMF entries are inconsistent");
-  }
-  if (n > ls->snapcap) {
-    xdmf_entry *e = realloc(ls->snaps, (size_t)n * sizeof *e);
-    if (!e) { free(files); return vfail(v, "out of memory"); }
-    ls->snaps = e;
-    ls->snapcap = n;
-  }
-  for (p = files; p && k < n; p = q + 1, k++) {
-    if (!(q = strchr(p, '\n'))) break;
-    *q = '\0';
-    snprintf(ls->snaps[k].file, sizeof ls->snaps[k].file, "%s", p);
-    ls->snaps[k].time = ((const double *)c->b[CB_SNAPT].data)[k];
-    ls->snaps[k].n = (size_t)((const int64_t *)c->b[CB_SNAPN].data)[k];
-  }
-  free(files);
-  return k == n ? 0 : vfail(v, "its XDMF entries are inconsistent");
-}
-
-int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
-               size_t errlen) {
-  lsim *ls = lsim_check(L, simidx);
-  sim *s = &ls->s;
+int ckpt_restore(sim *s, const ckpt *c, const ckpt_more *more, char *err,
+                 size_t errlen) {
   ckv v;
-  int top = lua_gettop(L);
-  simidx = lua_absindex(L, simidx);
   memset(&v, 0, sizeof v);
   v.apply = 1;
   if (vload(&v, &v.re, c, CB_REALN, CB_REAL, 0) == 0 &&
       vload(&v, &v.in, c, CB_INTN, CB_INT, 1) == 0 &&
       fields_match(&v, s, c) == 0) {
     visit_sim(&v, s);
-    visit_run(&v, L, simidx, ls, -1);
+    if (more && more->visit) more->visit(&v, more->ud);
     vleft(&v, &v.re);
     vleft(&v, &v.in);
-    state_ok(&v, s, ls, c->ps.n);
+    state_ok(&v, s, c->ps.n);
+    if (more && more->check) more->check(&v, more->ud);
   }
   if (!v.failed) {
     pcheck_lim lim;
@@ -761,7 +594,6 @@ int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
       lim.cells[d] = s->g.cells[d];
     }
     if (pcheck_particles(c->path, &c->ps, &lim, v.err, sizeof v.err)) {
-      lua_settop(L, top);
       vlist_free(&v.re, 0);
       vlist_free(&v.in, 0);
       snprintf(err, errlen, "%s", v.err);
@@ -769,20 +601,6 @@ int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
     }
   }
   if (!v.failed) copy_particles(&v, s, c);
-  if (!v.failed) copy_snaps(&v, ls, c);
-  if (!v.failed) {
-    lsim_uv(L, simidx, "state");
-    if (c->b[CB_STATE].n > 0 && !lua_istable(L, -1))
-      vfail(&v, "it holds a sim:state table but the scene registers none");
-    else if (c->b[CB_STATE].n == 0 && lua_istable(L, -1))
-      vfail(&v, "the scene registers a sim:state table but the checkpoint "
-            "holds none");
-    else if (c->b[CB_STATE].n > 0 &&
-             lstate_load(L, -1, c->b[CB_STATE].data, c->b[CB_STATE].n, v.err,
-                         sizeof v.err))
-      v.failed = 1;
-  }
-  lua_settop(L, top);
   vlist_free(&v.re, 0);
   vlist_free(&v.in, 0);
   if (v.failed) {
@@ -790,7 +608,6 @@ int ckpt_apply(lua_State *L, int simidx, const ckpt *c, char *err,
              c->path, v.err);
     return -1;
   }
-  ls->restarted = 1;
   return 0;
 }
 
@@ -830,7 +647,7 @@ int ckpt_latest(const char *dir, char *out, size_t len, char *err,
     snprintf(err, errlen, "%s: no checkpoint_NNNNNN.h5 in this directory", dir);
     return -1;
   }
-  ckname(out, len, dir, best);
+  ckpt_name(out, len, dir, best);
   return 0;
 }
 

@@ -21,8 +21,8 @@ double grid_bytes(const double lo[DIM], const double hi[DIM], double h,
   ** an int (a 1e308 domain, a 1e-300 cell), before nodes_along casts */
   for (d = 0; d < DIM; d++)
     nodes *= floor((hi[d] - lo[d]) / h + 0.5) + 1 + 2 * pad;
-  /* m, p, f, q per dimension, owner, head */
-  return nodes * (8.0 * (1 + 3 * DIM) + 8.0);
+  /* m, p, f, q, fi per dimension, owner, head */
+  return nodes * (8.0 * (1 + 4 * DIM) + 8.0);
 }
 
 int grid_init(grid *g, const double lo[DIM], const double hi[DIM], double h,
@@ -49,7 +49,8 @@ int grid_init(grid *g, const double lo[DIM], const double hi[DIM], double h,
     g->p[d] = calloc(g->nnodes, sizeof(double));
     g->f[d] = calloc(g->nnodes, sizeof(double));
     g->q[d] = calloc(g->nnodes, sizeof(double));
-    if (!g->p[d] || !g->f[d] || !g->q[d]) return -1;
+    g->fi[d] = calloc(g->nnodes, sizeof(double));
+    if (!g->p[d] || !g->f[d] || !g->q[d] || !g->fi[d]) return -1;
   }
   memset(g->owner, 0xff, g->nnodes * sizeof(int32_t));
   memset(g->head, 0xff, g->nnodes * sizeof(int32_t));
@@ -60,7 +61,9 @@ static void slots_free(grid *g) {
   int d;
   free(g->snext); free(g->sfield); free(g->snode); free(g->sm);
   free(g->sext); free(g->sb); free(g->scut); free(g->sbonded);
-  free(g->sbo); free(g->smo); free(g->ssw);
+  free(g->sbo); free(g->smo); free(g->ssw); free(g->srm);
+  free(g->sft); free(g->sfok);
+  for (d = 0; d < DIM; d++) free(g->sru[d]);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) free(g->sst[d]);
   for (d = 0; d < DIM; d++) free(g->sv[d]);
   free(g->sw);
@@ -69,20 +72,24 @@ static void slots_free(grid *g) {
   for (d = 0; d < DIM; d++) {
     free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
     free(g->sg[d]); free(g->sn[d]);
+    free(g->sfi[d]); free(g->sni[d]);
   }
 }
 
 void grid_free(grid *g) {
   int d;
   free(g->m); free(g->owner); free(g->head); free(g->shared);
-  for (d = 0; d < DIM; d++) { free(g->p[d]); free(g->f[d]); free(g->q[d]); }
+  for (d = 0; d < DIM; d++) {
+    free(g->p[d]); free(g->f[d]); free(g->q[d]);
+    free(g->fi[d]);
+  }
   slots_free(g);
   memset(g, 0, sizeof *g);
 }
 
 size_t grid_mem(const grid *g) {
-  size_t dense = g->nnodes * ((1 + 3 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
-  size_t slot = g->slotcap * (3 * sizeof(int32_t) + (2 + 5 * DIM) * sizeof(double));
+  size_t dense = g->nnodes * ((1 + 4 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
+  size_t slot = g->slotcap * (3 * sizeof(int32_t) + (2 + 7 * DIM) * sizeof(double));
   size_t mom = g->momcap * (1 + DIM + DIM * (DIM + 1) / 2) * sizeof(double);
   return dense + slot + mom + g->sharedcap * sizeof(int32_t);
 }
@@ -95,6 +102,7 @@ void grid_clear(grid *g, size_t i0, size_t i1, int clear_q) {
     memset(g->p[d] + i0, 0, n);
     memset(g->f[d] + i0, 0, n);
     if (clear_q) memset(g->q[d] + i0, 0, n);
+    memset(g->fi[d] + i0, 0, n);
   }
   memset(g->owner + i0, 0xff, (i1 - i0) * sizeof(int32_t));
 }
@@ -130,13 +138,16 @@ static int slots_grow(grid *g) {
   GROW(g->sb, double, cap); GROW(g->scut, double, cap);
   GROW(g->sbonded, unsigned char, cap);
   GROW(g->sbo, double, cap); GROW(g->smo, double, cap);
-  GROW(g->ssw, double, cap);
+  GROW(g->ssw, double, cap); GROW(g->srm, double, cap);
+  GROW(g->sft, double, cap); GROW(g->sfok, unsigned char, cap);
+  for (d = 0; d < DIM; d++) GROW(g->sru[d], double, cap);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) GROW(g->sst[d], double, cap);
   for (d = 0; d < DIM; d++) GROW(g->sv[d], double, cap);
   for (d = 0; d < DIM; d++) {
     GROW(g->sp[d], double, cap); GROW(g->sf[d], double, cap);
     GROW(g->sq[d], double, cap); GROW(g->sg[d], double, cap);
     GROW(g->sn[d], double, cap);
+    GROW(g->sfi[d], double, cap); GROW(g->sni[d], double, cap);
   }
   g->slotcap = cap;
   return 0;
@@ -178,6 +189,8 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
   memset(g->sbo + s0, 0, n);
   memset(g->smo + s0, 0, n);
   memset(g->ssw + s0, 0, n);
+  memset(g->srm + s0, 0, n);
+  for (d = 0; d < DIM; d++) memset(g->sru[d] + s0, 0, n);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) memset(g->sst[d] + s0, 0, n);
   for (d = 0; d < DIM; d++) {
     memset(g->sv[d] + s0, 0, n);
@@ -186,6 +199,8 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
     memset(g->sq[d] + s0, 0, n);
     memset(g->sg[d] + s0, 0, n);
     memset(g->sn[d] + s0, 0, n);
+    memset(g->sfi[d] + s0, 0, n);
+    memset(g->sni[d] + s0, 0, n);
   }
   if (g->moments) {
     memset(g->sw + s0, 0, n);

@@ -29,6 +29,7 @@
 ** it is cut itself.
 */
 #include <math.h>
+#include <string.h>
 #include "bands.h"
 #include "par.h"
 #include "sim.h"
@@ -59,6 +60,53 @@ static int32_t nearest(const grid *g, const double *x) {
   return node;
 }
 
+/* particle i's displacement since its bond was cut (the nearest image
+** across a periodic side) */
+static void released(const grid *g, const particles *ps, int frel, size_t i,
+                     double u[DIM]) {
+  int d;
+  for (d = 0; d < DIM; d++) {
+    const double *x0 = particles_comp(ps, frel, 1 + d);
+    double L = g->hi[d] - g->lo[d];
+    u[d] = ps->x[d][i] - x0[i];
+    if (g->periodic[d]) u[d] -= L * floor(u[d] / L + 0.5);
+  }
+}
+
+/* particle i's share w of node n's fit sums (sim.h BF_*), node n one
+** that only field f reaches: its offset from the node u (in cells), its
+** stress and their products */
+static void fit(sim *s, int32_t n, int32_t f, const double x[DIM], double w,
+                size_t i) {
+  const grid *g = &s->g;
+  const particles *ps = &s->ps;
+  double u[DIM], sg[DIM * (DIM + 1) / 2], *b = s->bfit;
+  size_t N = g->nnodes;
+  int32_t idx = n;
+  int d, a, c = 0;
+  for (d = 0; d < DIM; d++) {
+    int id = idx % g->n[d];
+    idx /= g->n[d];
+    u[d] = (x[d] - grid_x(g, d, id)) * g->inv_h;
+    if (g->periodic[d]) u[d] -= g->n[d] * floor(u[d] / g->n[d] + 0.5);
+  }
+#if DIM == 2
+  sg[0] = ps->s[S_XX][i];
+  sg[1] = ps->s[S_XY][i];
+  sg[2] = ps->s[S_YY][i];
+#endif
+  s->bffield[n] = f;
+  b[BF_W * N + n] += w;
+  for (d = 0; d < DIM; d++) {
+    b[(BF_U + d) * N + n] += w * u[d];
+    for (a = d; a < DIM; a++) b[(BF_UU + c++) * N + n] += w * u[d] * u[a];
+  }
+  for (a = 0; a < DIM * (DIM + 1) / 2; a++) {
+    b[(BF_S + a) * N + n] += w * sg[a];
+    for (d = 0; d < DIM; d++) b[(BF_SU + a * DIM + d) * N + n] += w * sg[a] * u[d];
+  }
+}
+
 /* Particles [i0, i1) into the slots of their shared nodes: strength,
 ** volume gradient, and the strength and mass each nearest node owns.
 ** With a plan (blk >= 0) only into the node rows this pass writes
@@ -70,7 +118,8 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double *bp = particles_comp(ps, s->fbond, 0);
-  const int nw = shape_width(s->shape);
+  const double *rel = particles_comp(ps, s->frel, 0);
+  const int nw = shape_width(s->shape), fitting = s->bond_fit;
   /* the normals took the volume gradient in p2g already (the same sums
   ** in the same order) */
   const int byvol = s->normals != NORMALS_MASS;
@@ -80,23 +129,28 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   stencil_geo geo;
   stencil_geo_init(&geo, g);
   for (i = i0; i < i1; i++) {
-    double x[DIM], mp = ps->m[i], V;
+    double x[DIM], mp = ps->m[i], V, u[DIM] = {0};
     int32_t node[STENCIL_MAX], f = bd[ps->body[i]].field, own;
     int nn, d, any = 0;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     nn = stencil_nodes(g, s->shape, x, node);
     for (k = 0; k < (size_t)nn && !any; k++) any = g->head[node[k]] >= 0;
-    if (!any) continue;
+    if (!any && !(fitting && bp[i] > 0)) continue;
     if (blk >= 0 &&
         !bands_rows(&s->bands, &geo, s->shape, x[BANDS_DIM], blk, pass, mine))
       continue;
     eval(s, &geo, x, &st);
+    if (rel[i] > 0) released(g, ps, s->frel, i, u);
 #if DIM == 2
     V = ps->vol0[i] * (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
 #endif
     for (k = 0; k < (size_t)st.n; k++) {
       int32_t n = st.node[k], sl;
-      if (g->head[n] < 0 || (blk >= 0 && !mine[k / nw])) continue;
+      if (blk >= 0 && !mine[k / nw]) continue;
+      if (g->head[n] < 0) {
+        if (fitting && bp[i] > 0 && st.w[k] > 0) fit(s, n, f, x, V * st.w[k], i);
+        continue;
+      }
       sl = grid_slot(g, n, f);
       g->sb[sl] += st.w[k] * mp * bp[i];
       g->ssw[sl] += V * st.w[k];
@@ -107,7 +161,12 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
 #endif
       if (!byvol)
         for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
+      if (rel[i] > 0) {
+        g->srm[sl] += st.w[k] * mp;
+        for (d = 0; d < DIM; d++) g->sru[d][sl] += st.w[k] * mp * u[d];
+      }
     }
+    if (!any) continue;
     own = nearest(g, x);
     if (blk >= 0) {
       int r = (int)floor((x[BANDS_DIM] - g->lo[BANDS_DIM]) * g->inv_h + 0.5) +
@@ -141,6 +200,7 @@ static void strength_part(void *arg, int t, int nparts) {
 
 /* over the plan p2g made: the particles have not moved since */
 void bond_gather(sim *s) {
+  if (s->bond_fit) memset(s->bfit, 0, BF_N * s->g.nnodes * sizeof *s->bfit);
   if (s->bands.nb) bands_run(&s->bands, s->par, gather_span, s);
   else
     gather(s, 0, s->ps.n, -1, 1);
@@ -155,6 +215,7 @@ static void scatter_part(void *arg, int t, int nparts) {
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   double *bp = particles_comp(ps, s->fbond, 0);
+  double *rel = particles_comp(ps, s->frel, 0);
   size_t i, i0, i1;
   par_range(ps->n, t, nparts, &i0, &i1);
   for (i = i0; i < i1; i++) {
@@ -166,8 +227,12 @@ static void scatter_part(void *arg, int t, int nparts) {
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     own = nearest(g, x);
     if (g->head[own] >= 0 &&
-        g->scut[grid_slot(g, own, bd[ps->body[i]].field)] > 0)
+        g->scut[grid_slot(g, own, bd[ps->body[i]].field)] > 0) {
       bp[i] = 0.0;
+      rel[i] = 1.0;
+      for (d = 0; d < DIM; d++)
+        ((double *)particles_comp(ps, s->frel, 1 + d))[i] = x[d];
+    }
   }
 }
 

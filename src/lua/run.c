@@ -13,7 +13,7 @@
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
-#include "ckpt.h"
+#include "lckpt.h"
 #include "interrupt.h"
 #include "lcheck.h"
 #include "lmvmpm.h"

@@ -14,7 +14,7 @@
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
-#include "ckpt.h"
+#include "lckpt.h"
 #include "interrupt.h"
 #include "lauxlib.h"
 #include "lmvmpm.h"

@@ -49,11 +49,13 @@ oom:
 
 void heat_free(sim *s) {
   heat_state *h = s->heat;
+  int d;
   if (!h) return;
   conduct_free(s);
   free(h->feff);
   free(h->hn);
   free(h->hs);
+  for (d = 0; d < DIM; d++) free(h->swi[d]);
   free(h);
   s->heat = NULL;
 }
@@ -129,14 +131,22 @@ oom:
 int heat_prepare(sim *s) {
   heat_state *h = s->heat;
   const grid *g = &s->g;
+  int d;
   if (g->slotcap > h->hscap) {
     double *p = realloc(h->hs, g->slotcap * sizeof *p);
     if (!p) goto oom;
     h->hs = p;
+    for (d = 0; d < DIM; d++) {
+      if (!(p = realloc(h->swi[d], g->slotcap * sizeof *p))) goto oom;
+      h->swi[d] = p;
+    }
     h->hscap = g->slotcap;
   }
   memset(h->hn, 0, g->nnodes * sizeof *h->hn);
-  if (g->nslot) memset(h->hs, 0, g->nslot * sizeof *h->hs);
+  if (g->nslot) {
+    memset(h->hs, 0, g->nslot * sizeof *h->hs);
+    for (d = 0; d < DIM; d++) memset(h->swi[d], 0, g->nslot * sizeof *h->swi[d]);
+  }
   if (h->conduct && conduct_prepare(s)) return -1;
   return 0;
 oom:
@@ -228,6 +238,56 @@ int heat_grid(sim *s) {
   s->e.heat_friction += fr;
   if (s->heat->conduct) return conduct(s);
   return 0;
+}
+
+/* -c . v / 2 of one entry: the second half of an impulse's work (book.c) */
+static double half_work(double *const c[DIM], double *const v[DIM], size_t i) {
+  double w = 0;
+  int d;
+  for (d = 0; d < DIM; d++) w += c[d][i] * v[d][i];
+  return -0.5 * w;
+}
+
+void heat_finish(sim *s) {
+  heat_state *h = s->heat;
+  const grid *g = &s->g;
+  const int remap = s->update != UPDATE_USL;
+  double *const *v = remap ? g->p : g->q, *const *sv = remap ? g->sp : g->sq;
+  double fr;
+  size_t n;
+  memset(h->hn, 0, g->nnodes * sizeof *h->hn);
+  if (g->nslot) memset(h->hs, 0, g->nslot * sizeof *h->hs);
+  for (n = 0; n < g->nnodes; n++) {
+    int32_t slots[64], sl;
+    double wc = 0;
+    int ns = 0;
+    if (!(g->m[n] > s->mcut)) continue;
+    if (g->head[n] < 0) { /* the dense table: the walls' friction only */
+      double w = half_work(g->fi, v, n);
+      if (w != 0) heat_wall_friction(s, (int32_t)n, -1, w);
+      continue;
+    }
+    /* at a shared node, what the walls did to each slot is the walls';
+    ** the rest of the slots' friction is contact's, split as contact.c
+    ** split the first half (drv -1: heat_contact passes over driven
+    ** fields itself) */
+    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
+      double w, ww;
+      if (ns < 64) slots[ns++] = sl;
+      if (!(g->sm[sl] > s->mcut)) continue;
+      w = half_work(g->sfi, sv, (size_t)sl);
+      ww = half_work(h->swi, sv, (size_t)sl);
+      if (ww != 0) heat_wall_friction(s, (int32_t)n, sl, ww);
+      wc += w - ww;
+    }
+    if (wc != 0) heat_contact(s, slots, ns, -1, wc);
+  }
+  switch (s->shape) {
+  case SHAPE_GIMP: fr = gather_kind(s, SHAPE_GIMP); break;
+  case SHAPE_BSPLINE2: fr = gather_kind(s, SHAPE_BSPLINE2); break;
+  default: fr = gather_kind(s, SHAPE_LINEAR);
+  }
+  s->e.heat_friction += fr;
 }
 
 void heat_update(sim *s) {

@@ -66,6 +66,9 @@ typedef struct heat_state {
   ** other field shares) and per slot */
   double *hn, *hs;
   size_t hscap;
+  /* the walls' friction impulses at slots this step (book.c keeps them
+  ** mixed with contact's in sfi): heat_finish tells the two apart */
+  double *swi[DIM];
   /* conduct.c's nodal arrays (dense and per slot), made at the start */
   double *nC, *nT, *nQ, *nT0, *nH, *nHT, *nA[DIM];
   double *sC, *sT, *sQ, *sT0, *sH, *sHT, *sA[DIM];
@@ -106,8 +109,18 @@ void heat_contact(sim *s, const int32_t *slots, int ns, int32_t drv,
                   double fric);
 /* boundary.c: a wall's friction work at node n (sl < 0) or slot sl */
 void heat_wall_friction(sim *s, int32_t n, int32_t sl, double loss);
+/* boundary.c: a wall's friction impulse c at slot sl, kept for
+** heat_finish */
+static inline void heat_wall_impulse(sim *s, int32_t sl, int d, double c) {
+  s->heat->swi[d][sl] += c;
+}
 /* before g2p: the nodes' friction heat to the particles, and conduction */
 int heat_grid(sim *s);
+/* the second half of the friction impulses' work (book.c), split and
+** given to the particles as the first: after book_finish under MUSL
+** (before the remap pass moves the particles), just before g2p under
+** USL, from the same velocities book_finish reads */
+void heat_finish(sim *s);
 /* after the constitutive update: T += q / (m c), thermal strain, sums */
 void heat_update(sim *s);
 /* sum m c (T - T0) over the particles: the thermal energy */

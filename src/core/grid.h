@@ -29,6 +29,9 @@ typedef struct grid {
   /* dense centre-of-mass field */
   double *m, *p[DIM], *f[DIM];
   double *q[DIM];      /* remapped momentum (MUSL) */
+  /* the friction (tangential) impulse the walls gave the node this step
+  ** (book.c books its work on the particles' motion) */
+  double *fi[DIM];
   int32_t *owner;      /* first field seen at the node, -1 if none */
   int32_t *head;       /* first slot of a shared node, -1 otherwise */
   /* sparse slots, one per (shared node, field) */
@@ -37,6 +40,8 @@ typedef struct grid {
   double *sm, *sp[DIM], *sf[DIM], *sq[DIM];
   double *sg[DIM];     /* mass gradient, for normals */
   double *sn[DIM];     /* outward unit normal of the field's body */
+  double *sfi[DIM], *sni[DIM]; /* friction impulses (contact and walls,
+                                  as fi) and contact's normal ones */
   double *sext;        /* reach of the field's material along its normal */
   /* bonds (bond.c), filled only in scenes with bonds: the field's
   ** mass-weighted bond strength, its volume gradient sum_p V_p grad S_ip
@@ -46,6 +51,13 @@ typedef struct grid {
   double *sbo, *smo;   /* strength x mass, and mass, of the particles whose
                           nearest node this is (bond.c) */
   unsigned char *sbonded; /* bonded this step: moves with the node */
+  /* the particles whose bond was cut (bond.c): sum_p m_p S_ip, and
+  ** sum_p m_p S_ip (x_p - x_p at the cut), for the opening (contact.c) */
+  double *srm, *sru[DIM];
+  /* the traction fitted at the slot (contact.c, bond_traction = "fit"),
+  ** and whether a fit was found there */
+  double *sft;
+  unsigned char *sfok;
   /* sum_p w_p sigma_p (in-plane, upper triangle as sxx) and sum_p w_p,
   ** w_p = V_p S_ip, over the field's particles (bond.c): the stress the
   ** bond test projects on the normal */

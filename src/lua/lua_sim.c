@@ -210,13 +210,15 @@ int lsim_new(lua_State *L) {
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
       "wall_remap", "wall_contact", "normals", "normal_window", "contact_gap",
-      "xpic", NULL};
+      "xpic", "bond_release", "bond_traction", "bond_length", NULL};
   static const char *const updates[] = {"usl", "musl", "usavg", NULL};
   static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   static const char *const gapopt[] = {"touch", "step", NULL};
   static const char *const wallopt[] = {"node", "patch", "couple", NULL};
+  static const char *const releaseopt[] = {"open", "contact", NULL};
+  static const char *const tractionopt[] = {"mixture", "fit", NULL};
   static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
                                              "plane", NULL};
   const char *what = "sim";
@@ -372,6 +374,9 @@ int lsim_new(lua_State *L) {
     s->wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
     s->normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
     s->gap_step = chk_option(L, 1, what, "contact_gap", s->gap_step, gapopt);
+    s->release = chk_option(L, 1, what, "bond_release", RELEASE_OPEN, releaseopt);
+    s->bond_fit = chk_option(L, 1, what, "bond_traction", 0, tractionopt);
+    s->bond_length = chk_num(L, 1, what, "bond_length", 0, 0, HUGE_VAL, 0);
     s->normal_window = (int)chk_num(L, 1, what, "normal_window", s->normal_window,
                                     0, NORMAL_WINDOW_MAX, CHK_INT);
     lua_getfield(L, 1, "units");

@@ -96,7 +96,7 @@ function E.run(o)
   for _, b in ipairs(sim:particles("body")) do if b == 1 then nd = nd + 1 end end
   local req = math.sqrt(nd * (h / 2) ^ 2 / math.pi)
   local t_c = r * r
-  sim.dt = o.per and t_c / o.per or 0.9 * h * h / 4
+  sim.dt = o.per and t_c / o.per or 0.2 * h * h -- below 0.225 h^2: one substep
   local Ta = kin.Ta
   local nsteps = math.ceil((o.t_end or 25) * t_c / sim.dt)
   local th, thc, c0 = 0, 0, os.clock()

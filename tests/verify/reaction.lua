@@ -169,9 +169,10 @@ end
 -- Ta/T0 = 20, 30, 50.  CI size: 6 cells per radius, bracketed (delta =
 -- 0.95 delta_ref stays bounded, 1.03 delta_ref runs away over 8
 -- conduction times); the bisections at 4, 6, 8, 12 cells per radius are
--- in studies/thermal_explosion.lua.  The 2 % target (0.97 delta_ref
--- bounded) holds for the fk exponent and Ta/T0 = 20 at this size, not
--- for 30 and 50 (-3.5 %): see docs/hotspots.md.
+-- in studies/thermal_explosion.lua.  The 2 % check (0.97 delta_ref
+-- bounded) is reported, not asserted: it holds for all four over 8
+-- conduction times at this size, but the disc's critical delta at 6
+-- cells is 2.7 % low (and 3.5 % over long runs): see docs/verification.md.
 V.case "thermal explosion of a disc (Frank-Kamenetskii): critical delta at four exponents"
 do
   local E = require "mvmpm.explosion"

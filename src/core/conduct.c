@@ -104,6 +104,9 @@ int conduct_prepare(sim *s) {
     double *q = realloc(h->hcond, s->ps.cap * sizeof *q);
     if (!q) goto oom;
     h->hcond = q;
+    q = realloc(h->tgrid, s->ps.cap * sizeof *q);
+    if (!q) goto oom;
+    h->tgrid = q;
     h->pgcap = s->ps.cap;
   }
   return 0;
@@ -121,7 +124,8 @@ void conduct_free(sim *s) {
     for (k = 0; k < NARR; k++) { free(*p[k]); *p[k] = NULL; }
   }
   free(h->hcond);
-  h->hcond = NULL;
+  free(h->tgrid);
+  h->hcond = h->tgrid = NULL;
 }
 
 double conduct_dt(const sim *s) {
@@ -215,7 +219,8 @@ STENCIL_INLINE void flow_kind(sim *s, const int kind, int perfield) {
   }
 }
 
-/* each particle's share of its nodes' increments */
+/* each particle's share of its nodes' increments, and the nodes'
+** temperature at the particle (the field the reaction sees) */
 STENCIL_INLINE double back_kind(sim *s, const int kind, int perfield) {
   heat_state *h = s->heat;
   const particles *ps = &s->ps;
@@ -227,9 +232,10 @@ STENCIL_INLINE double back_kind(sim *s, const int kind, int perfield) {
   for (i = 0; i < ps->n; i++) {
     const body *bd = &s->bodies[ps->body[i]];
     int32_t mi = s->bmat[ps->body[i]];
-    double x[DIM], dT = 0, q;
+    double x[DIM], dT = 0, Tg = 0, q;
     int k, d;
     h->hcond[i] = 0;
+    h->tgrid[i] = 0;
     if (mi < 0) continue;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     stencil_eval(&geo, kind, x, s->lp, &st);
@@ -238,7 +244,9 @@ STENCIL_INLINE double back_kind(sim *s, const int kind, int perfield) {
       int sl = at(s, perfield, st.node[k], bd->field, &j);
       const double *T = sl ? h->sT : h->nT, *T0 = sl ? h->sT0 : h->nT0;
       dT += st.w[k] * (T[j] - T0[j]);
+      Tg += st.w[k] * T[j];
     }
+    h->tgrid[i] = Tg;
     q = ps->m[i] * s->mats[mi].cv * dT;
     if (bd->hold) held += q; /* the reservoir keeps its temperature */
     else h->hcond[i] = q;

@@ -74,7 +74,10 @@ typedef struct heat_state {
   double *sC, *sT, *sQ, *sT0, *sH, *sHT, *sA[DIM];
   size_t hscap_c;  /* ... the slots' room */
   double *hcond;   /* per particle: conduction's J this step */
-  size_t pgcap;    /* ... its room */
+  double *tgrid;   /* per particle: the temperature field conduction
+                      resolves, sum_i N_ip T_i after this step's
+                      conduction (the reaction's temperature) */
+  size_t pgcap;    /* ... their room */
   size_t nsub;     /* conduction substeps of the last step */
   double dtc;      /* conduction's stable step of the last step */
   double E0;       /* sum m c T at the start (thermal energy origin) */

@@ -96,7 +96,7 @@ static void react_part(void *arg, int t, int nparts) {
   particles *ps = &s->ps;
   const double *T = particles_comp(ps, s->ftemp, 0);
   const double *q = particles_comp(ps, s->heat->fq, 0);
-  const double *qc = s->heat->conduct ? s->heat->hcond : NULL;
+  const double *Tg = s->heat->conduct ? s->heat->tgrid : NULL;
   double *lam = particles_comp(ps, s->freact, 0);
   react_sums *red = s->red;
   size_t n = ps->n, c, c0, c1, i, i0, i1;
@@ -113,10 +113,14 @@ static void react_part(void *arg, int t, int nparts) {
       m = &s->mats[mi];
       if (m->rx.Z == 0 || lam[i] >= 1) continue;
       /* from the temperature the step's other heat leads to (heat_update
-      ** adds it after this phase); a held body keeps its own */
-      Ti = T[i];
-      if (!s->bodies[ps->body[i]].hold)
-        Ti += (q[i] + (qc ? qc[i] : 0)) / (ps->m[i] * m->cv);
+      ** adds it after this phase); a held body keeps its own.  Under
+      ** conduction the temperature is the grid's field at the particle
+      ** (conduct.c's tgrid): conduction resolves no structure below the
+      ** cell, and a particle's own deviation from that field, which
+      ** conduction never smooths, would otherwise be amplified by the
+      ** rate on the adiabatic time scale (docs/algorithm.md) */
+      if (s->bodies[ps->body[i]].hold) Ti = T[i];
+      else Ti = (Tg ? Tg[i] : T[i]) + q[i] / (ps->m[i] * m->cv);
       dl = react_advance(&m->rx, m->cv, s->react_tol, s->dt, &Ti, &lam[i],
                          s->react_ign, &tig, &ns);
       qi = ps->m[i] * m->rx.Q * dl;

@@ -161,35 +161,56 @@ do
 end
 
 -- (d) Thermal explosion of a disc held at T0 on its rim (a ring body at
--- hold_temperature, perfect thermal contact), zero order, the linearised
--- exponent (fk = T0): Frank-Kamenetskii's problem, critical at
--- delta_c = 2.00 (infinite cylinder).  CI size: 4 cells per radius; the
--- finer grids are in studies/thermal_explosion.lua.  The target (within
--- 2 %) is not met: see docs/hotspots.md for the measured numbers.
-V.case "thermal explosion of a disc (Frank-Kamenetskii, delta_c = 2)"
+-- hold_temperature, perfect thermal contact), zero order: Frank-
+-- Kamenetskii's problem.  Four problems, each against its own critical
+-- delta computed here without the engine (E.reference: shooting on the
+-- steady radial problem to the fold of its branch): the linearised (fk)
+-- exponent (delta_c = 2 exactly) and the Arrhenius exponent at
+-- Ta/T0 = 20, 30, 50.  CI size: 6 cells per radius, bracketed (delta =
+-- 0.95 delta_ref stays bounded, 1.03 delta_ref runs away over 8
+-- conduction times); the bisections at 4, 6, 8, 12 cells per radius are
+-- in studies/thermal_explosion.lua.  The 2 % check (0.97 delta_ref
+-- bounded) is reported, not asserted: it holds for all four over 8
+-- conduction times at this size, but the disc's critical delta at 6
+-- cells is 2.7 % low (and 3.5 % over long runs): see docs/verification.md.
+V.case "thermal explosion of a disc (Frank-Kamenetskii): critical delta at four exponents"
 do
   local E = require "mvmpm.explosion"
   local T0 = 500
-  local kin = E.kinetics(T0, 2.0) -- delta = 2 r^2: r_c = 1 exactly
-  local function theta_exact(d) -- the steady FK solution's peak
+  local d0, a0 = E.reference(0)
+  V.near("the shooting reference at eps = 0: delta_c = 2", d0, 2, 1e-9)
+  V.near("... at theta(0) = ln 4", a0, math.log(4), 1e-5)
+  local kin = E.kinetics(T0, 2.0) -- delta = 2 r^2
+  local function theta_exact(d) -- the steady fk solution's peak
     local a = 8 / d - 2
     local B = (a - math.sqrt(a * a - 4)) / 2
     return math.log(8 * B / d)
   end
   local run, th, _, _, _, thc = E.run {r = math.sqrt(0.25 / 2), n = 4, T0 = T0, kinetics = kin,
                                        t_end = 8}
-  V.holds("delta = 0.25 stays bounded over 8 conduction times", not run, th)
+  V.holds("fk, delta = 0.25 stays bounded over 8 conduction times", not run, th)
   V.below("... its peak theta below ln 4 (the largest steady peak)", th, math.log(4))
-  V.info("... its peak theta, at the rim (exact steady peak, at the centre, " ..
+  V.info("... its peak theta (exact steady peak, at the centre, " ..
          string.format("%.4f", theta_exact(0.25)) .. ")", th)
   V.info("... theta at the centre", thc)
-  local run2 = E.run {r = 2.0, n = 4, T0 = T0, kinetics = kin, t_end = 8}
-  V.holds("delta = 8 runs away", run2, 0)
-  local rc, cpu = E.critical {lo = math.sqrt(0.25 / 2), hi = 2.0, n = 4, T0 = T0,
-                              kinetics = kin, t_end = 8, iters = 5}
-  V.info("critical radius by bisection, 4 cells per radius (exact 1)", rc)
-  V.info("... measured delta_c = 2 r_c^2 (exact 2.00)", 2 * rc * rc)
-  V.info("... CPU s of the bisection", cpu, "s")
+  local n, cpu = 6, 0
+  for _, ratio in ipairs {0, 20, 30, 50} do
+    local name = ratio == 0 and "fk exponent" or string.format("Arrhenius, Ta/T0 = %d", ratio)
+    local ref = ratio == 0 and 2 or E.reference(1 / ratio)
+    local k = ratio == 0 and kin or E.kinetics(T0, 2.0, ratio, true)
+    local function runs(f)
+      local r, _, _, _, c = E.run {r = math.sqrt(f * ref / 2), n = n, T0 = T0, kinetics = k,
+                                   t_end = 8}
+      cpu = cpu + c
+      return r
+    end
+    V.info(name .. ": reference delta_c (shooting)", ref)
+    V.holds(name .. ": 0.95 delta_ref stays bounded, 6 cells per radius", not runs(0.95), 0)
+    V.holds(name .. ": 1.03 delta_ref runs away", runs(1.03), 0)
+    V.info(name .. ": 0.97 delta_ref stays bounded (the 2 % target; 1 = yes)",
+           runs(0.97) and 0 or 1)
+  end
+  V.info("CPU s of the disc runs", cpu, "s")
 end
 
 -- (e) The melting cap of friction heating: a block slid along a frictional

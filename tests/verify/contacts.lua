@@ -1,4 +1,4 @@
--- sim:contacts() (src/diag_contact.c) and force chains (mvmpm.chain).
+-- sim:contacts() (src/core/diag_contact.c) and force chains (mvmpm.chain).
 --   1. Three discs stacked in a frictionless channel under gravity: the
 --      force between discs 1 and 2 is the weight of discs 2 and 3, and
 --      between 2 and 3 the weight of disc 3 (the masses are density x

@@ -162,7 +162,7 @@ do
   V.below("largest |residual| / boundary work after the ramp", worst, 0.03)
   -- what is left is the grid's inelastic loss where the walls, started
   -- at 600 m/s, and the driven grains strike the bed: contact books only
-  -- friction (src/contact.c), and a frictionless impact leaves about 2 %
+  -- friction (src/core/contact.c), and a frictionless impact leaves about 2 %
   -- of the energy unbooked in the bouncing cylinder too.  A positive
   -- residual is energy lost, a negative one energy made.
   V.below("|residual| / boundary work at the end", math.abs(e.residual) / e.boundary_work, 0.02)

@@ -25,7 +25,7 @@ local function invariants(tag, s, mon)
   V.below(tag .. ": |y momentum - impulses of sides and cylinders| / (M v)", s.max_py_error, 1e-9,
           "the periodic direction: the material's momentum changes only by the sides' impulses")
   -- the budget: friction booked as the friction impulses' work on the
-  -- mean slip over each step (src/contact.c); what is left is the grid's
+  -- mean slip over each step (src/core/contact.c); what is left is the grid's
   -- inelastic loss at collisions and the transfers' (docs/shear.md)
   V.below(tag .. ": max |energy residual| / work into the material", s.max_residual, 0.08,
           "work in = stored + kinetic + friction + plastic + viscous + residual")

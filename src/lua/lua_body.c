@@ -487,18 +487,6 @@ int lbody_new(lua_State *L) {
   }
   seedbox_free(bx); /* done with it: give the memory back now */
   drive_spec(L, ls, 1, b);
-  /* a body driven at a constant velocity and given none starts at its
-  ** drive: seeded at rest it would jump to it at the first step, and the
-  ** drive's work for that jump, M v^2, would be booked against the M v^2 / 2
-  ** of kinetic energy it gives (measured: 16 % of a piston's work) */
-  lua_getfield(L, 2, "velocity");
-  lua_getfield(L, 2, "driven");
-  if (lua_isnil(L, -2) && lua_istable(L, -1) && omega == 0) {
-    const body *bd = &s->bodies[b];
-    for (k = first; k < s->ps.n; k++)
-      for (d = 0; d < DIM; d++) s->ps.v[d][k] = bd->vdrive[d];
-  }
-  lua_pop(L, 2);
   /* initial temperature: the body's, else the scene's (thermal.h) */
   if ((tfun || !isnan(T0)) && thermal_enable(s)) luaL_error(L, "body: out of memory");
   thermal_seed(s, first, s->ps.n, isnan(T0) ? NULL : &T0);

@@ -228,7 +228,8 @@ STENCIL_INLINE double gather_kind(sim *s, const int kind) {
   return total;
 }
 
-int heat_grid(sim *s) {
+/* the nodes' friction heat to the particles, booked as friction heat */
+static void gather(sim *s) {
   double fr;
   switch (s->shape) {
   case SHAPE_GIMP: fr = gather_kind(s, SHAPE_GIMP); break;
@@ -236,6 +237,10 @@ int heat_grid(sim *s) {
   default: fr = gather_kind(s, SHAPE_LINEAR);
   }
   s->e.heat_friction += fr;
+}
+
+int heat_grid(sim *s) {
+  gather(s);
   if (s->heat->conduct) return conduct(s);
   return 0;
 }
@@ -253,7 +258,6 @@ void heat_finish(sim *s) {
   const grid *g = &s->g;
   const int remap = s->update != UPDATE_USL;
   double *const *v = remap ? g->p : g->q, *const *sv = remap ? g->sp : g->sq;
-  double fr;
   size_t n;
   memset(h->hn, 0, g->nnodes * sizeof *h->hn);
   if (g->nslot) memset(h->hs, 0, g->nslot * sizeof *h->hs);
@@ -282,12 +286,7 @@ void heat_finish(sim *s) {
     }
     if (wc != 0) heat_contact(s, slots, ns, -1, wc);
   }
-  switch (s->shape) {
-  case SHAPE_GIMP: fr = gather_kind(s, SHAPE_GIMP); break;
-  case SHAPE_BSPLINE2: fr = gather_kind(s, SHAPE_BSPLINE2); break;
-  default: fr = gather_kind(s, SHAPE_LINEAR);
-  }
-  s->e.heat_friction += fr;
+  gather(s);
 }
 
 void heat_update(sim *s) {

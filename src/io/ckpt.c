@@ -41,16 +41,6 @@ struct ckv {
   int failed;
 };
 
-static int vfail(ckv *v, const char *fmt, ...) {
-  va_list ap;
-  if (v->failed) return -1;
-  v->failed = 1;
-  va_start(ap, fmt);
-  vsnprintf(v->err, sizeof v->err, fmt, ap);
-  va_end(ap);
-  return -1;
-}
-
 static void vlist_free(vlist *l, int owned) {
   size_t k;
   if (owned)
@@ -74,10 +64,10 @@ static int vpush(ckv *v, vlist *l, const char *name, double r, int64_t i) {
     if (rr) l->r = rr;
     ii = rr ? realloc(l->i, cap * sizeof *ii) : NULL;
     if (ii) l->i = ii;
-    if (!ii) return vfail(v, "out of memory");
+    if (!ii) return ckv_fail(v, "out of memory");
     l->cap = cap;
   }
-  if (!(l->name[l->n] = strdup(name))) return vfail(v, "out of memory");
+  if (!(l->name[l->n] = strdup(name))) return ckv_fail(v, "out of memory");
   l->r[l->n] = r;
   l->i[l->n] = i;
   l->n++;
@@ -91,7 +81,7 @@ static long vfind(ckv *v, vlist *l, const char *name) {
     for (k = 0; k < l->n; k++)
       if (strcmp(l->name[k], name) == 0) break;
     if (k == l->n)
-      return vfail(v, "it has no value '%s' (written by another version of "
+      return ckv_fail(v, "it has no value '%s' (written by another version of "
                    "mvmpm, or for another scene)", name);
   }
   l->used[k] = 1;
@@ -119,7 +109,7 @@ static void vreal(ckv *v, const char *name, double *p) {
   if (!v->apply) { vpush(v, &v->re, name, *p, 0); return; }
   if ((k = vfind(v, &v->re, name)) < 0) return;
   if (isnan(v->re.r[k]) || (isinf(v->re.r[k]) && !may_be_inf(name)))
-    vfail(v, "its value '%s' in /state/real is %g, allowed: a finite "
+    ckv_fail(v, "its value '%s' in /state/real is %g, allowed: a finite "
           "number", name, v->re.r[k]);
   else *p = v->re.r[k];
 }
@@ -156,7 +146,7 @@ static void vsame(ckv *v, const char *name, int64_t have, const char *what) {
   int64_t t = have;
   vint(v, name, &t);
   if (!v->failed && t != have)
-    vfail(v, "it has %lld %s, the scene makes %lld", (long long)t, what,
+    ckv_fail(v, "it has %lld %s, the scene makes %lld", (long long)t, what,
           (long long)have);
 }
 
@@ -287,7 +277,7 @@ static void visit_sim(ckv *v, sim *s) {
   nlaw = s->nlaw;
   vint(v, "nlaw", &nlaw);
   if (v->apply && !v->failed) {
-    if (nlaw < 0 || nlaw > 1000000) { vfail(v, "it has %lld contact laws", (long long)nlaw); return; }
+    if (nlaw < 0 || nlaw > 1000000) { ckv_fail(v, "it has %lld contact laws", (long long)nlaw); return; }
     s->nlaw = 0;
     memset(s->flaw, 0, (size_t)s->nfield);
   }
@@ -304,10 +294,10 @@ static void visit_sim(ckv *v, sim *s) {
     snprintf(nm, sizeof nm, "%sbond", pre); vreal(v, nm, &l.bond);
     if (v->apply && !v->failed) {
       if (a < 0 || b < 0 || a >= s->nfield || b >= s->nfield || a == b)
-        vfail(v, "its contact law %d names fields %lld and %lld", k + 1,
+        ckv_fail(v, "its contact law %d names fields %lld and %lld", k + 1,
               (long long)a, (long long)b);
       else if (sim_set_law(s, (int32_t)a, (int32_t)b, l.mu, l.bond))
-        vfail(v, "out of memory");
+        ckv_fail(v, "out of memory");
     }
   }
 }
@@ -318,10 +308,8 @@ static void visit_sim(ckv *v, sim *s) {
 ** =======================================================
 */
 
-/* a growing string */
-typedef struct sbuf { char *b; size_t n, cap; int bad; } sbuf;
-
-static void sadd(sbuf *s, const char *p, size_t n) {
+/* a growing string (ckpt.h) */
+void ckpt_buf_add(ckpt_buf *s, const char *p, size_t n) {
   if (s->bad) return;
   if (s->n + n + 1 > s->cap) {
     size_t cap = s->cap ? 2 * s->cap : 256;
@@ -336,11 +324,11 @@ static void sadd(sbuf *s, const char *p, size_t n) {
   s->b[s->n] = '\0';
 }
 
-static void names(sbuf *s, const vlist *l) {
+static void names(ckpt_buf *s, const vlist *l) {
   size_t k;
   for (k = 0; k < l->n; k++) {
-    sadd(s, l->name[k], strlen(l->name[k]));
-    sadd(s, "\n", 1);
+    ckpt_buf_add(s, l->name[k], strlen(l->name[k]));
+    ckpt_buf_add(s, "\n", 1);
   }
 }
 
@@ -360,7 +348,7 @@ int ckpt_save(const char *path, sim *s, const ckpt_more *more, h5blob *b,
               h5meta *meta, const h5prov *prov, int nomem, char *err,
               size_t errlen) {
   ckv v;
-  sbuf rn = {0}, in = {0}, fl = {0};
+  ckpt_buf rn = {0}, in = {0}, fl = {0};
   int k, r;
   memset(&v, 0, sizeof v);
   visit_sim(&v, s);
@@ -369,8 +357,8 @@ int ckpt_save(const char *path, sim *s, const ckpt_more *more, h5blob *b,
   names(&in, &v.in);
   for (k = 0; k < s->ps.nfields; k++)
     if (s->ps.fields[k].flags & PF_RESTART) {
-      sadd(&fl, s->ps.fields[k].name, strlen(s->ps.fields[k].name));
-      sadd(&fl, "\n", 1);
+      ckpt_buf_add(&fl, s->ps.fields[k].name, strlen(s->ps.fields[k].name));
+      ckpt_buf_add(&fl, "\n", 1);
     }
   if (v.failed || rn.bad || in.bad || fl.bad || nomem) {
     snprintf(err, errlen, "checkpoint: %s", v.failed ? v.err : "out of memory");
@@ -407,7 +395,7 @@ static int vrange(ckv *v, const char *name, double x, double lo, double hi,
                   int open) {
   if (v->failed) return -1;
   if (open ? x > lo && x <= hi : x >= lo && x <= hi) return 0;
-  return vfail(v, "its value '%s' in /state is %.17g, allowed %c%.17g, "
+  return ckv_fail(v, "its value '%s' in /state is %.17g, allowed %c%.17g, "
                "%.17g]", name, x, open ? '(' : '[', lo, hi);
 }
 
@@ -497,17 +485,17 @@ static int vload(ckv *v, vlist *l, const ckpt *c, int nb, int vb, int isint) {
   l->names = ckpt_string(c, nb);
   l->name = calloc(cnt + 1, sizeof *l->name);
   l->used = calloc(cnt + 1, 1);
-  if (!l->names || !l->name || !l->used) return vfail(v, "out of memory");
+  if (!l->names || !l->name || !l->used) return ckv_fail(v, "out of memory");
   for (p = l->names; *p && k < cnt; p = q + 1) {
     if (!(q = strchr(p, '\n'))) break;
     *q = '\0';
     l->name[k++] = p;
   }
-  if (k != cnt) return vfail(v, "its lists of names and values differ in length");
+  if (k != cnt) return ckv_fail(v, "its lists of names and values differ in length");
   l->n = cnt;
   if (isint) l->i = malloc(cnt * 8 + 8);
   else l->r = malloc(cnt * 8 + 8);
-  if (!l->i && !l->r) return vfail(v, "out of memory");
+  if (!l->i && !l->r) return ckv_fail(v, "out of memory");
   memcpy(isint ? (void *)l->i : (void *)l->r, c->b[vb].data, cnt * 8);
   return 0;
 }
@@ -517,30 +505,30 @@ static void vleft(ckv *v, const vlist *l) {
   size_t k;
   for (k = 0; k < l->n && !v->failed; k++)
     if (!l->used[k])
-      vfail(v, "it has a value '%s' this scene does not make", l->name[k]);
+      ckv_fail(v, "it has a value '%s' this scene does not make", l->name[k]);
 }
 
 /* the particle fields a checkpoint of this scene holds, in order */
 static int fields_match(ckv *v, const sim *s, const ckpt *c) {
-  sbuf fl = {0};
+  ckpt_buf fl = {0};
   int k, r = 0;
   for (k = 0; k < s->ps.nfields; k++)
     if (s->ps.fields[k].flags & PF_RESTART) {
       const pfield *f = &s->ps.fields[k];
       int j = particles_find(&c->ps, f->name);
-      sadd(&fl, f->name, strlen(f->name));
-      sadd(&fl, "\n", 1);
+      ckpt_buf_add(&fl, f->name, strlen(f->name));
+      ckpt_buf_add(&fl, "\n", 1);
       if (j < 0 || !(c->ps.fields[j].flags & PF_READ))
-        r = vfail(v, "it has no dataset '%s' (a particle field of this "
+        r = ckv_fail(v, "it has no dataset '%s' (a particle field of this "
                   "scene)", f->name);
       else if (c->ps.fields[j].type != f->type ||
                c->ps.fields[j].ncomp != f->ncomp)
-        r = vfail(v, "its dataset '%s' is of another shape or type than "
+        r = ckv_fail(v, "its dataset '%s' is of another shape or type than "
                   "the particle field", f->name);
     }
   if (!r && (fl.bad || fl.n != c->b[CB_FIELDS].n ||
              memcmp(fl.b, c->b[CB_FIELDS].data, fl.n) != 0))
-    r = vfail(v, "it holds other particle fields than this scene makes "
+    r = ckv_fail(v, "it holds other particle fields than this scene makes "
               "(scene: %s; checkpoint: %.*s)", fl.b ? fl.b : "",
               (int)c->b[CB_FIELDS].n, (const char *)c->b[CB_FIELDS].data);
   free(fl.b);
@@ -551,7 +539,7 @@ static int copy_particles(ckv *v, sim *s, const ckpt *c) {
   particles *ps = &s->ps;
   size_t n = c->ps.n;
   int k, comp;
-  if (particles_reserve(ps, n ? n : 1)) return vfail(v, "out of memory");
+  if (particles_reserve(ps, n ? n : 1)) return ckv_fail(v, "out of memory");
   for (k = 0; k < ps->nfields; k++) {
     const pfield *f = &ps->fields[k];
     int j = particles_find(&c->ps, f->name);

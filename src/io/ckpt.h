@@ -111,4 +111,9 @@ int ckpt_sandboxed(const ckpt *c);
 int ckpt_latest(const char *dir, char *out, size_t len, char *err,
                 size_t errlen);
 
+/* a growing string: names joined by '\n' for a checkpoint's lists; bad
+** once an allocation failed (the caller checks it and frees b) */
+typedef struct ckpt_buf { char *b; size_t n, cap; int bad; } ckpt_buf;
+void ckpt_buf_add(ckpt_buf *s, const char *p, size_t n);
+
 #endif

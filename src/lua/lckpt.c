@@ -98,40 +98,23 @@ static void check_run(ckv *v, void *ud) {
 ** =======================================================
 */
 
-/* a growing string */
-typedef struct sbuf { char *b; size_t n, cap; int bad; } sbuf;
-
-static void sadd(sbuf *s, const char *p, size_t n) {
-  if (s->bad) return;
-  if (s->n + n + 1 > s->cap) {
-    size_t cap = s->cap ? 2 * s->cap : 256;
-    char *q;
-    while (cap < s->n + n + 1) cap *= 2;
-    if (!(q = realloc(s->b, cap))) { s->bad = 1; return; }
-    s->b = q;
-    s->cap = cap;
-  }
-  memcpy(s->b + s->n, p, n);
-  s->n += n;
-  s->b[s->n] = '\0';
-}
 
 static int strcmpp(const void *a, const void *b) {
   return strcmp(*(const char *const *)a, *(const char *const *)b);
 }
 
 /* the overrides in force, "name=value" lines in name order */
-static void params(lua_State *L, sbuf *s);
+static void params(lua_State *L, ckpt_buf *s);
 
 char *ckpt_overrides(lua_State *L) {
-  sbuf s = {0};
+  ckpt_buf s = {0};
   params(L, &s);
   if (s.bad) { free(s.b); return NULL; }
   if (!s.b) return calloc(1, 1);
   return s.b;
 }
 
-static void params(lua_State *L, sbuf *s) {
+static void params(lua_State *L, ckpt_buf *s) {
   char *line[256];
   int n = 0, k;
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides");
@@ -152,7 +135,7 @@ static void params(lua_State *L, sbuf *s) {
   lua_pop(L, 1);
   qsort(line, (size_t)n, sizeof *line, strcmpp);
   for (k = 0; k < n; k++) {
-    sadd(s, line[k], strlen(line[k]));
+    ckpt_buf_add(s, line[k], strlen(line[k]));
     free(line[k]);
   }
 }
@@ -163,7 +146,7 @@ void ckpt_write(lua_State *L, int simidx) {
   sim *s = &ls->s;
   runpart rp;
   ckpt_more more;
-  sbuf sf = {0}, pa = {0};
+  ckpt_buf sf = {0}, pa = {0};
   double *st = NULL;
   int64_t *sn = NULL;
   h5blob b[CB_N];
@@ -194,8 +177,8 @@ void ckpt_write(lua_State *L, int simidx) {
   for (k = 0; st && sn && k < ls->nsnap; k++) {
     st[k] = ls->snaps[k].time;
     sn[k] = (int64_t)ls->snaps[k].n;
-    sadd(&sf, ls->snaps[k].file, strlen(ls->snaps[k].file));
-    sadd(&sf, "\n", 1);
+    ckpt_buf_add(&sf, ls->snaps[k].file, strlen(ls->snaps[k].file));
+    ckpt_buf_add(&sf, "\n", 1);
   }
   params(L, &pa);
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.scene");

@@ -67,6 +67,13 @@ else
 BUILD  = build
 BIN    = mvmpm
 endif
+# D3=1: the whole tree compiled for three dimensions on its own, into
+# build3 (mvmpm3), while the 3-D forms are written file by file
+ifeq ($(D3),1)
+BUILD  := $(BUILD)3
+BIN    := $(BUILD)/mvmpm3
+EXTRA_CFLAGS += -DDIM=3
+endif
 CFLAGS  = -std=c11 -pthread -D_POSIX_C_SOURCE=200809L $(WARN) $(OPT) -MMD -MP \
           $(EXTRA_CFLAGS)
 LDLIBS  = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm -pthread
@@ -170,7 +177,7 @@ pbx-shear: $(BIN)
 	@echo "running in the background; progress in out/pbx_shear.log"
 
 clean:
-	rm -rf build build-san build-tsan build-fuzz mvmpm
+	rm -rf build build-san build-tsan build-fuzz build3 mvmpm
 
 # The Lua module for a stock interpreter: the engine's objects built again
 # position-independent, linked without liblua (the interpreter has it;

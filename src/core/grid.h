@@ -116,6 +116,38 @@ static inline int grid_wrap(const grid *g, int d, int i) {
   }
   return i;
 }
+/* the stored node at indices i (pad included, wrapped): x runs fastest,
+** then y, then z.  Every node number in the core is made here or by
+** grid_face_node, so the layout is written once for any DIM */
+static inline int32_t grid_node(const grid *g, const int i[DIM]) {
+  int32_t n = i[DIM - 1];
+  int d;
+  for (d = DIM - 2; d >= 0; d--) n = n * g->n[d] + i[d];
+  return n;
+}
+/* the indices of stored node n, as grid_node made them */
+static inline void grid_ijk(const grid *g, int32_t n, int i[DIM]) {
+  int d;
+  for (d = 0; d < DIM; d++) { i[d] = n % g->n[d]; n /= g->n[d]; }
+}
+/* the nodes of the plane i_d = line (a line in 2-D): how many, and the
+** j-th, with the other indices in grid_node's order */
+static inline size_t grid_face_count(const grid *g, int d) {
+  size_t c = 1;
+  int e;
+  for (e = 0; e < DIM; e++) if (e != d) c *= (size_t)g->n[e];
+  return c;
+}
+static inline int32_t grid_face_node(const grid *g, int d, int line,
+                                     size_t j) {
+  int i[DIM], e;
+  for (e = 0; e < DIM; e++) {
+    if (e == d) { i[e] = line; continue; }
+    i[e] = (int)(j % (size_t)g->n[e]);
+    j /= (size_t)g->n[e];
+  }
+  return grid_node(g, i);
+}
 /* physical coordinate of stored node index i along d */
 static inline double grid_x(const grid *g, int d, int i) {
   return g->lo[d] + (i - (g->periodic[d] ? 0 : g->pad)) * g->h;

@@ -11,7 +11,9 @@
 --   3. A body given angular_velocity w spins rigidly: its particles'
 --      angular momentum about the centroid is w sum m r^2 (2-D,
 --      b:diag()), and its centre of mass is at rest.
---   4. Bad shapes are refused with the field and the expected count.
+--   4. A ball across a periodic seam seeds its image (the whole ball's
+--      measure); a body from points (x, y[, z]) has the points' mass.
+--   5. Bad shapes are refused with the field and the expected count.
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 local D = mvmpm.dim
@@ -93,6 +95,32 @@ V.near("box = rect", count(mvmpm.box {lo = P(0.2, 0.2, 0.2), hi = P(0.7, 0.6, 0.
        count(mvmpm.rect {lo = P(0.2, 0.2, 0.2), hi = P(0.7, 0.6, 0.9)}), 0)
 V.near("box measure", count(mvmpm.box {lo = P(0.2, 0.2, 0.2), hi = P(0.7, 0.6, 0.9)}),
        D == 2 and 0.5 * 0.4 or 0.5 * 0.4 * 0.7, 1e-12, true)
+
+V.case("a shape across a periodic seam seeds its image")
+do
+  local sides = {left = "periodic", right = "periodic"}
+  local sp = mvmpm.sim {domain = domain(), cell = 0.05, dim = D, sides = sides}
+  local m = mvmpm.elastic {K = 1, G = 1, density = 1}
+  -- shifted by 9 cells from the middle: the same lattice offsets
+  local seam = sp:body {shape = mvmpm.ball {center = P(0.95, 0.5, 0.5), radius = 0.2}, material = m}
+  local whole = count(mvmpm.ball {center = P(0.5, 0.5, 0.5), radius = 0.2})
+  V.near("the ball across the seam has the whole ball's measure", seam:mass(), whole, 1e-12, true)
+  local cx = seam:centroid()
+  V.near("its centroid is where the ball is, across the seam", cx, 0.95, 1e-9)
+end
+
+V.case("a body from points")
+do
+  local sp = mvmpm.sim {domain = domain(), cell = 0.05, dim = D}
+  local pts = {x = {0.1, 0.2, 0.3}, y = {0.4, 0.5, 0.6}, volume = 0.01}
+  if D == 3 then pts.z = {0.7, 0.8, 0.9} end
+  local b = sp:body {points = pts, material = mvmpm.elastic {K = 1, G = 1, density = 2}}
+  V.near("mass = density x volume x points", b:mass(), 2 * 0.01 * 3, 1e-12, true)
+  local c = {b:centroid()}
+  V.near("centroid x", c[1], 0.2, 1e-12)
+  V.near("centroid " .. (D == 2 and "y" or "z"), c[D], D == 2 and 0.5 or 0.8, 1e-12)
+  V.holds("centroid has one number per axis", #c == D, #c)
+end
 
 if D == 2 then
   V.case("angular_velocity: a rigid spin, L = w sum m r^2")

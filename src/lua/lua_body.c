@@ -426,8 +426,10 @@ int lbody_new(lua_State *L) {
     lshape *sh;
     lua_pop(L, 1);
     if (!luaL_testudata(L, -1, LSHAPE_MT))
-      luaL_error(L, "body '%s': field 'shape' must be a shape (mvmpm.disk, "
-                    "rect, polygon, annulus, region or rest)", name);
+      luaL_error(L, "body '%s': field 'shape' must be a shape (mvmpm.%s, "
+                    "cylinder, region or rest)", name,
+                 DIM == 2 ? "disk, rect, polygon, annulus"
+                          : "ball, box, extrude, shell");
     sh = lshape_check(L, -1);
     isrest = sh->kind == SH_REST;
     for (d = 0; d < DIM; d++) {
@@ -442,8 +444,8 @@ int lbody_new(lua_State *L) {
     if (exact) {
       double a = lshape_area(sh);
       if (a < 0)
-        luaL_error(L, "body '%s': volume = \"exact\" needs a shape of known area",
-                   name);
+        luaL_error(L, "body '%s': volume = \"exact\" needs a shape of known %s",
+                   name, DIM == 2 ? "area" : "volume");
       if (bx->sd.n) scale = a / (bx->sd.n * bx->sd.vol[0]);
     }
     lua_pop(L, 2);

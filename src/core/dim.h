@@ -14,9 +14,15 @@
 ** eps_zz = 0 produces; zz does not enter the in-plane forces */
 #define NSTRESS 4
 enum { S_XX, S_YY, S_XY, S_ZZ };
+#define DIM_STRESS_NAMES {"xx", "yy", "xy", "zz"}
+#define DIM_TENSOR_NAMES {"xx", "xy", "yx", "yy"}
+#define DIM_VOLUME_UNIT "L^2"
 #elif DIM == 3
 #define NSTRESS 6
 enum { S_XX, S_YY, S_ZZ, S_XY, S_YZ, S_XZ };
+#define DIM_STRESS_NAMES {"xx", "yy", "zz", "xy", "yz", "xz"}
+#define DIM_TENSOR_NAMES {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"}
+#define DIM_VOLUME_UNIT "L^3"
 #else
 #error "DIM must be 2 or 3"
 #endif

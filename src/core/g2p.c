@@ -15,6 +15,7 @@
 #include "bands.h"
 #include "par.h"
 #include "stencil.h"
+#include "vec.h"
 
 /*
 ** What the transfer itself dissipates.  FLIP's new velocity v + S dv
@@ -44,33 +45,39 @@ static int g2p_lossy(const sim *s) {
 ** the first step: sim_measure) */
 double g2p_affine_energy(const sim *s) {
   const particles *ps = &s->ps;
-  const double *c00, *c01, *c10, *c11;
+  const double *C[NTENS];
   double r[DIM][STENCIL_MAX], e = 0;
   stencil_geo geo;
   stencil st;
   size_t i;
+  int a, b;
   if (s->transfer != TRANSFER_APIC || s->faff < 0) return 0;
-  c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
-  c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
+  for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   stencil_geo_init(&geo, &s->g);
   for (i = 0; i < ps->n; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]}, a = 0;
-    int k;
-    if (c00[i] == 0 && c01[i] == 0 && c10[i] == 0 && c11[i] == 0) continue;
+    double x[DIM], en = 0;
+    int k, zero = 1;
+    for (a = 0; a < NTENS; a++) zero &= C[a][i] == 0;
+    if (zero) continue;
+    for (a = 0; a < DIM; a++) x[a] = ps->x[a][i];
     stencil_eval_r(&geo, s->shape, x, s->lp, &st, r);
     for (k = 0; k < st.n; k++) {
-      double ux = c00[i] * r[0][k] + c01[i] * r[1][k];
-      double uy = c10[i] * r[0][k] + c11[i] * r[1][k];
-      a += st.w[k] * (ux * ux + uy * uy);
+      double t = 0;
+      for (a = 0; a < DIM; a++) {
+        double u = 0;
+        for (b = 0; b < DIM; b++) u += C[a * DIM + b][i] * r[b][k];
+        t += u * u;
+      }
+      en += st.w[k] * t;
     }
-    e += 0.5 * ps->m[i] * a;
+    e += 0.5 * ps->m[i] * en;
   }
   return e;
 }
 
 /* the sums of one chunk of particles (par.h), kept in s->red */
 typedef struct sums {
-  double ke, mom[DIM], am, v2max, pe, loss;
+  double ke, mom[DIM], am[NANG], v2max, pe, loss;
   size_t out;
 } sums;
 _Static_assert(sizeof(sums) <= SIM_RED_BYTES, "sums fit SIM_RED_BYTES");
@@ -96,7 +103,7 @@ STENCIL_INLINE void box_init(box *bx, const grid *g, const double *grav) {
 
 /* after the move: wrap, domain check, cell, sums */
 STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
-  double m = ps->m[i], v2 = 0;
+  double m = ps->m[i], v2 = 0, xs[DIM], vs[DIM];
   int32_t cell = 0, stride = 1;
   int d;
   for (d = 0; d < DIM; d++) {
@@ -113,6 +120,8 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
     if (!(x >= bx->lo[d] && x < bx->hi[d] && r < bx->cells[d])) cell = -1;
     else if (cell >= 0) cell += stride * (int32_t)r;
     stride *= bx->cells[d];
+    xs[d] = x;
+    vs[d] = ps->v[d][i];
     v2 += ps->v[d][i] * ps->v[d][i];
     u->mom[d] += m * ps->v[d][i];
     u->pe -= m * bx->grav[d] * x;
@@ -121,9 +130,7 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
   ps->cell[i] = cell;
   u->ke += 0.5 * m * v2;
   if (v2 > u->v2max) u->v2max = v2;
-#if DIM == 2
-  u->am += m * (ps->x[0][i] * ps->v[1][i] - ps->x[1][i] * ps->v[0][i]);
-#endif
+  vec_moment(u->am, m, xs, vs);
 }
 
 /* what a g2p pass does besides the gather: move the particles (USL),
@@ -145,109 +152,106 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
-  const int full = mode == G2P_MOVE, nw = shape_width(kind);
+  const int full = mode == G2P_MOVE, rowlen = stencil_rowlen(kind);
   const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
   const int xp = s->transfer == TRANSFER_XPIC, lossy = g2p_lossy(s);
   /* the dense grid only through these: loads need not wait for stores */
-  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
-  const double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
-  double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
+  const double *restrict gq[DIM], *restrict gf[DIM];
+  double *restrict gp[DIM];
   /* APIC: the affine matrix C; B-splines give it exactly from the
   ** weights, C = 4 / h^2 sum_i S_ip v_i r_i^T, the hats and GIMP as the
   ** velocity gradient sum_i v_i grad S_ip^T */
   const double Dinv = 4.0 * g->inv_h * g->inv_h;
-  double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
+  double *C[NTENS] = {NULL};
   double r[DIM][STENCIL_MAX];
   unsigned char mine[SHAPE_MAXW];
   stencil_geo geo;
   box bx;
   stencil st;
   size_t i;
+  int a, c;
+  for (a = 0; a < DIM; a++) { gq[a] = g->q[a]; gf[a] = g->f[a]; gp[a] = g->p[a]; }
   stencil_geo_init(&geo, g);
   box_init(&bx, g, s->gravity);
-  if (apic) {
-    c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
-    c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
-  }
+  if (apic)
+    for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   for (i = i0; i < i1; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    double vx = 0, vy = 0, ax = 0, ay = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
-    double b00 = 0, b01 = 0, b10 = 0, b11 = 0;
-    double nvx, nvy, aref = 0, aff = 0;
+    double x[DIM], vp[DIM], v[DIM] = {0}, ac[DIM] = {0}, nv[DIM];
+    double l[NTENS] = {0}, bm[NTENS] = {0}, aref = 0, aff = 0;
     const body *b = &bd[ps->body[i]];
     int32_t slot[STENCIL_MAX];
     int k;
+    for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; vp[a] = ps->v[a][i]; }
     if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
     else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
-      double w = st.w[k], qx, qy, fx, fy;
+      double w = st.w[k], q[DIM], fo[DIM];
       if (shared && g->head[n] >= 0) {
         int32_t sl = slot[k] = grid_slot(g, n, b->field);
-        qx = g->sq[0][sl]; qy = g->sq[1][sl];
-        fx = g->sf[0][sl]; fy = g->sf[1][sl];
+        for (a = 0; a < DIM; a++) { q[a] = g->sq[a][sl]; fo[a] = g->sf[a][sl]; }
       } else {
         if (shared) slot[k] = -1;
-        qx = gqx[n]; qy = gqy[n];
-        fx = gfx[n]; fy = gfy[n];
+        for (a = 0; a < DIM; a++) { q[a] = gq[a][n]; fo[a] = gf[a][n]; }
       }
-      vx += w * qx; vy += w * qy;
-      ax += w * fx; ay += w * fy;
+      for (a = 0; a < DIM; a++) { v[a] += w * q[a]; ac[a] += w * fo[a]; }
       if (apic && lossy) { /* the old affine field moved on by dv */
-        double ux = ps->v[0][i] + c00[i] * r[0][k] + c01[i] * r[1][k] + fx;
-        double uy = ps->v[1][i] + c10[i] * r[0][k] + c11[i] * r[1][k] + fy;
-        aref += w * (ux * ux + uy * uy - fx * fx - fy * fy);
+        double t = 0, uu[DIM];
+        for (a = 0; a < DIM; a++) {
+          uu[a] = vp[a];
+          for (c = 0; c < DIM; c++) uu[a] += C[a * DIM + c][i] * r[c][k];
+          uu[a] += fo[a];
+        }
+        for (a = 0; a < DIM; a++) t += uu[a] * uu[a];
+        for (a = 0; a < DIM; a++) t -= fo[a] * fo[a];
+        aref += w * t;
       }
-      if (full || (apic && kind != SHAPE_BSPLINE2)) {
-        double dx = st.dw[0][k], dy = st.dw[1][k];
-        l00 += qx * dx; l01 += qx * dy;
-        l10 += qy * dx; l11 += qy * dy;
-      }
-      if (apic && kind == SHAPE_BSPLINE2) {
-        double wx = w * r[0][k], wy = w * r[1][k];
-        b00 += qx * wx; b01 += qx * wy;
-        b10 += qy * wx; b11 += qy * wy;
-      }
+      if (full || (apic && kind != SHAPE_BSPLINE2))
+        for (a = 0; a < DIM; a++)
+          for (c = 0; c < DIM; c++) l[a * DIM + c] += q[a] * st.dw[c][k];
+      if (apic && kind == SHAPE_BSPLINE2)
+        for (a = 0; a < DIM; a++)
+          for (c = 0; c < DIM; c++) bm[a * DIM + c] += q[a] * (w * r[c][k]);
     }
     if (apic) {
-      if (kind == SHAPE_BSPLINE2) {
-        b00 *= Dinv; b01 *= Dinv; b10 *= Dinv; b11 *= Dinv;
-      } else {
-        b00 = l00; b01 = l01; b10 = l10; b11 = l11;
-      }
-      if (b->driven) b00 = b01 = b10 = b11 = 0;
-      c00[i] = b00; c01[i] = b01; c10[i] = b10; c11[i] = b11;
+      for (a = 0; a < NTENS; a++)
+        bm[a] = kind == SHAPE_BSPLINE2 ? bm[a] * Dinv : l[a];
+      if (b->driven)
+        for (a = 0; a < NTENS; a++) bm[a] = 0;
+      for (a = 0; a < NTENS; a++) C[a][i] = bm[a];
       for (k = 0; k < st.n; k++) { /* the new affine field's energy */
-        double ux = b00 * r[0][k] + b01 * r[1][k];
-        double uy = b10 * r[0][k] + b11 * r[1][k];
-        aff += st.w[k] * (ux * ux + uy * uy);
+        double t = 0;
+        for (a = 0; a < DIM; a++) {
+          double ua = 0;
+          for (c = 0; c < DIM; c++) ua += bm[a * DIM + c] * r[c][k];
+          t += ua * ua;
+        }
+        aff += st.w[k] * t;
       }
       aff *= 0.5 * ps->m[i];
     }
-    if (b->driven) {
-      nvx = b->vdrive[0];
-      nvy = b->vdrive[1];
-    } else if (apic) {
-      nvx = vx;
-      nvy = vy;
-    } else if (xp) { /* f holds XPIC's correction c (xpic.c) */
-      nvx = vx + ax;
-      nvy = vy + ay;
-    } else {
-      nvx = flip * (ps->v[0][i] + ax) + pic * vx;
-      nvy = flip * (ps->v[1][i] + ay) + pic * vy;
+    for (a = 0; a < DIM; a++) {
+      if (b->driven) nv[a] = b->vdrive[a];
+      else if (apic) nv[a] = v[a];
+      else if (xp) nv[a] = v[a] + ac[a]; /* f holds XPIC's correction c (xpic.c) */
+      else nv[a] = flip * (vp[a] + ac[a]) + pic * v[a];
     }
     if (lossy) { /* the transfer's loss against FLIP's v + S dv */
-      double loss = 0;
+      double loss = 0, t;
       if (b->driven) {
       } else if (apic) { /* against the affine field moved on by dv */
-        loss = 0.5 * ps->m[i] * (aref + ax * ax + ay * ay - nvx * nvx -
-                                 nvy * nvy) - aff;
+        t = aref;
+        for (a = 0; a < DIM; a++) t += ac[a] * ac[a];
+        for (a = 0; a < DIM; a++) t -= nv[a] * nv[a];
+        loss = 0.5 * ps->m[i] * t - aff;
       } else {
         /* XPIC: S dv = S vL - S v, S v kept by xpic.c in L */
-        double fx = ps->v[0][i] + (xp ? vx - ps->L[0][i] : ax);
-        double fy = ps->v[1][i] + (xp ? vy - ps->L[1][i] : ay);
-        loss = 0.5 * ps->m[i] * (fx * fx + fy * fy - nvx * nvx - nvy * nvy);
+        double fv[DIM];
+        t = 0;
+        for (a = 0; a < DIM; a++) fv[a] = vp[a] + (xp ? v[a] - ps->L[a][i] : ac[a]);
+        for (a = 0; a < DIM; a++) t += fv[a] * fv[a];
+        for (a = 0; a < DIM; a++) t -= nv[a] * nv[a];
+        loss = 0.5 * ps->m[i] * t;
       }
       if (full) { u->loss += loss; u->ke += aff; }
       else { /* kept for remap_kind, which sums them */
@@ -255,13 +259,10 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
         ps->L[1][i] = aff;
       }
     }
-    ps->v[0][i] = nvx;
-    ps->v[1][i] = nvy;
+    for (a = 0; a < DIM; a++) ps->v[a][i] = nv[a];
     if (full) {
-      ps->L[0][i] = l00; ps->L[1][i] = l01;
-      ps->L[2][i] = l10; ps->L[3][i] = l11;
-      ps->x[0][i] = x[0] + dt * vx;
-      ps->x[1][i] = x[1] + dt * vy;
+      for (a = 0; a < NTENS; a++) ps->L[a][i] = l[a];
+      for (a = 0; a < DIM; a++) ps->x[a][i] = x[a] + dt * v[a];
       settle(&bx, ps, i, u);
     } else if (scatter) {
       const double mp = ps->m[i];
@@ -270,18 +271,19 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
         continue;
       for (k = 0; k < st.n; k++) {
         int32_t n = st.node[k];
-        double wm = st.w[k] * mp, ux = nvx, uy = nvy;
-        if (mode == G2P_SCATTER1 && !mine[k / nw]) continue;
-        if (apic) {
-          ux += b00 * r[0][k] + b01 * r[1][k];
-          uy += b10 * r[0][k] + b11 * r[1][k];
+        double wm = st.w[k] * mp, uu[DIM];
+        if (mode == G2P_SCATTER1 && !mine[k / rowlen]) continue;
+        for (a = 0; a < DIM; a++) {
+          uu[a] = nv[a];
+          if (apic) {
+            double cr = 0;
+            for (c = 0; c < DIM; c++) cr += bm[a * DIM + c] * r[c][k];
+            uu[a] += cr;
+          }
+          gp[a][n] += wm * uu[a];
         }
-        gpx[n] += wm * ux;
-        gpy[n] += wm * uy;
-        if (shared && slot[k] >= 0) {
-          g->sp[0][slot[k]] += wm * ux;
-          g->sp[1][slot[k]] += wm * uy;
-        }
+        if (shared && slot[k] >= 0)
+          for (a = 0; a < DIM; a++) g->sp[a][slot[k]] += wm * uu[a];
       }
     }
   }
@@ -300,24 +302,25 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double lp = s->lp;
-  const int nw = shape_width(kind);
-  double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
-  const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
+  const int rowlen = stencil_rowlen(kind);
+  double *restrict gp[DIM];
+  const double *C[NTENS] = {NULL};
   double r[DIM][STENCIL_MAX];
   unsigned char mine[SHAPE_MAXW];
   stencil_geo geo;
   stencil st;
   size_t i;
+  int a, c;
+  for (a = 0; a < DIM; a++) gp[a] = g->p[a];
   stencil_geo_init(&geo, g);
-  if (apic) {
-    c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
-    c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
-  }
+  if (apic)
+    for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   for (i = i0; i < i1; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    const double mp = ps->m[i], nvx = ps->v[0][i], nvy = ps->v[1][i];
+    double x[DIM], nv[DIM];
+    const double mp = ps->m[i];
     int32_t f = bd[ps->body[i]].field;
     int k;
+    for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; nv[a] = ps->v[a][i]; }
     if (split &&
         !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, 2, mine))
       continue;
@@ -325,18 +328,20 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
     else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
-      double wm = st.w[k] * mp, ux = nvx, uy = nvy;
-      if (split && !mine[k / nw]) continue;
-      if (apic) {
-        ux += c00[i] * r[0][k] + c01[i] * r[1][k];
-        uy += c10[i] * r[0][k] + c11[i] * r[1][k];
+      double wm = st.w[k] * mp, uu[DIM];
+      if (split && !mine[k / rowlen]) continue;
+      for (a = 0; a < DIM; a++) {
+        uu[a] = nv[a];
+        if (apic) {
+          double cr = 0;
+          for (c = 0; c < DIM; c++) cr += C[a * DIM + c][i] * r[c][k];
+          uu[a] += cr;
+        }
+        gp[a][n] += wm * uu[a];
       }
-      gpx[n] += wm * ux;
-      gpy[n] += wm * uy;
       if (shared && g->head[n] >= 0) {
         int32_t sl = grid_slot(g, n, f);
-        g->sp[0][sl] += wm * ux;
-        g->sp[1][sl] += wm * uy;
+        for (a = 0; a < DIM; a++) g->sp[a][sl] += wm * uu[a];
       }
     }
   }
@@ -402,7 +407,7 @@ static void finish(sim *s) {
   for (c = 0; c < nc; c++) {
     u.ke += red[c].ke;
     for (d = 0; d < DIM; d++) u.mom[d] += red[c].mom[d];
-    u.am += red[c].am;
+    for (d = 0; d < NANG; d++) u.am[d] += red[c].am[d];
     u.pe += red[c].pe;
     u.out += red[c].out;
     u.loss += red[c].loss;
@@ -411,7 +416,7 @@ static void finish(sim *s) {
   s->e.kinetic = u.ke;
   s->e.potential = u.pe;
   for (d = 0; d < DIM; d++) s->e.mom[d] = u.mom[d];
-  s->e.angmom = u.am;
+  s->e.angmom = u.am[0];
   s->vmax = sqrt(u.v2max);
   s->nout = u.out;
   s->e.transfer += u.loss;
@@ -478,43 +483,40 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   const body *bd = s->bodies;
   const double dt = s->dt, lp = s->lp;
   const int lossy = g2p_lossy(s), apic = s->transfer == TRANSFER_APIC;
-  const double *restrict gpx = g->p[0], *restrict gpy = g->p[1];
-  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
+  const double *restrict gp[DIM], *restrict gq[DIM];
   stencil_geo geo;
   box bx;
   stencil st;
   size_t i;
+  int a, c;
+  for (a = 0; a < DIM; a++) { gp[a] = g->p[a]; gq[a] = g->q[a]; }
   stencil_geo_init(&geo, g);
   box_init(&bx, g, s->gravity);
   for (i = i0; i < i1; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    double vx = 0, vy = 0, l00 = 0, l01 = 0, l10 = 0, l11 = 0;
+    double x[DIM], v[DIM] = {0}, l[NTENS] = {0};
     int32_t f = bd[ps->body[i]].field;
     int k;
+    for (a = 0; a < DIM; a++) x[a] = ps->x[a][i];
     stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
-      double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k], ux, uy, qx, qy;
+      double w = st.w[k], uu[DIM], q[DIM];
       if (shared && g->head[n] >= 0) {
         int32_t sl = grid_slot(g, n, f);
-        ux = g->sp[0][sl]; uy = g->sp[1][sl];
-        qx = g->sq[0][sl]; qy = g->sq[1][sl];
+        for (a = 0; a < DIM; a++) { uu[a] = g->sp[a][sl]; q[a] = g->sq[a][sl]; }
       } else {
-        ux = gpx[n]; uy = gpy[n];
-        qx = gqx[n]; qy = gqy[n];
+        for (a = 0; a < DIM; a++) { uu[a] = gp[a][n]; q[a] = gq[a][n]; }
       }
-      vx += w * qx; vy += w * qy;
-      l00 += ux * dx; l01 += ux * dy;
-      l10 += uy * dx; l11 += uy * dy;
+      for (a = 0; a < DIM; a++) v[a] += w * q[a];
+      for (a = 0; a < DIM; a++)
+        for (c = 0; c < DIM; c++) l[a * DIM + c] += uu[a] * st.dw[c][k];
     }
     if (lossy) { /* g2p_kind's, before L is set */
       u->loss += ps->L[0][i];
       if (apic) u->ke += ps->L[1][i];
     }
-    ps->L[0][i] = l00; ps->L[1][i] = l01;
-    ps->L[2][i] = l10; ps->L[3][i] = l11;
-    ps->x[0][i] = x[0] + dt * vx;
-    ps->x[1][i] = x[1] + dt * vy;
+    for (a = 0; a < NTENS; a++) ps->L[a][i] = l[a];
+    for (a = 0; a < DIM; a++) ps->x[a][i] = x[a] + dt * v[a];
     settle(&bx, ps, i, u);
   }
 }

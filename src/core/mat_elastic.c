@@ -15,9 +15,10 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   size_t i;
   for (i = i0; i < i1; i++) {
     double J;
+    mat_rot rot;
     if (bmat[ps->body[i]] != id) continue;
     mat_get(ps, i, s);
-    J = mat_kinematics(ps, i, dt, s, D);
+    J = mat_kinematics(ps, i, dt, s, D, &rot);
     mat_hooke(s, D, dt, lam, g2);
     mat_put(ps, i, s);
     mat_sum_j(sum, J);

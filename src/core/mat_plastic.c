@@ -45,9 +45,10 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   size_t i;
   for (i = i0; i < i1; i++) {
     double J, p, q, qy;
+    mat_rot rot;
     if (bmat[ps->body[i]] != id) continue;
     mat_get(ps, i, s);
-    J = mat_kinematics(ps, i, dt, s, D);
+    J = mat_kinematics(ps, i, dt, s, D, &rot);
     mat_hooke(s, D, dt, lam, g2); /* the elastic trial stress */
     q = sqrt(1.5 * mat_deviator(s, &p, d));
     qy = y0 + H * ep[i];

@@ -27,8 +27,8 @@
 ** budget.  Stored energy: p^2/(2K) + |s_inf|^2/(4 G_inf) +
 ** sum |s_k|^2/(4 G_k).
 **
-** Element stresses are deviatoric, so each is stored as xx, yy, xy (zz
-** = -(xx + yy)) in the fields "maxwell1" .. "maxwellN", one per element
+** Element stresses are deviatoric, so each is stored without its zz
+** (= -(xx + yy)): xx, yy, xy in 2-D, xx, yy, xy, yz, xz in 3-D, in the fields "maxwell1" .. "maxwellN", one per element
 ** the material has; materials share them by name.
 */
 #include <math.h>
@@ -37,7 +37,7 @@
 
 #define F_VW MAT_MAXPRONY   /* field slot of viscous_work */
 
-static const char *const comp[] = {"xx", "yy", "xy"};
+static const char *const slot_names[NSTRESS] = DIM_STRESS_NAMES;
 
 static int setup(material *m, particles *ps) {
   int k, c;
@@ -45,10 +45,11 @@ static int setup(material *m, particles *ps) {
     char name[16];
     int f;
     snprintf(name, sizeof name, "maxwell%d", k + 1);
-    f = particles_add_field(ps, name, 3, PF_DOUBLE, "M/(L T^2)",
+    f = particles_add_field(ps, name, MAT_NDEV, PF_DOUBLE, "M/(L T^2)",
                             PF_OUTPUT | PF_RESTART);
     if (f < 0) return -1;
-    for (c = 0; c < 3; c++) ps->fields[f].comp_names[c] = comp[c];
+    for (c = 0; c < MAT_NDEV; c++)
+      ps->fields[f].comp_names[c] = slot_names[mat_dev_slot(c)];
     m->field[k] = f;
   }
   m->field[F_VW] = particles_add_field(ps, "viscous_work", 1, PF_DOUBLE,
@@ -56,10 +57,13 @@ static int setup(material *m, particles *ps) {
   return m->field[F_VW] < 0 ? -1 : 0;
 }
 
-/* a : b of two deviators in stress order (zz included, shear twice) */
-static inline double ddot(const double *a, const double *b) {
-  return a[S_XX] * b[S_XX] + a[S_YY] * b[S_YY] + a[S_ZZ] * b[S_ZZ] +
-         2.0 * a[S_XY] * b[S_XY];
+#define ddot mat_ddot
+
+/* element k's stored deviator of particle i, zz restored */
+static inline void dev_get(double *const *ak, size_t i, double *x) {
+  int c;
+  for (c = 0; c < MAT_NDEV; c++) x[mat_dev_slot(c)] = ak[c][i];
+  x[S_ZZ] = -(x[S_XX] + x[S_YY]);
 }
 
 static void update(const material *m, particles *ps, const int32_t *bmat,
@@ -69,7 +73,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
   const double K = m->K, g2 = 2.0 * m->G_inf;
   double e[MAT_MAXPRONY], B[MAT_MAXPRONY], k1[MAT_MAXPRONY], k2[MAT_MAXPRONY],
       k3[MAT_MAXPRONY];
-  double *a[MAT_MAXPRONY][3];
+  double *a[MAT_MAXPRONY][MAT_NDEV];
   double *vw = particles_comp(ps, m->field[F_VW], 0);
   double *hq = m->fheat >= 0 ? particles_comp(ps, m->fheat, 0) : NULL;
   double s[NSTRESS], D[NSTRESS], d[NSTRESS], strain = 0, power = 0, visc = 0;
@@ -88,20 +92,20 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     k1[k] = om * (2.0 - om) / (4.0 * G);      /* tau (1 - e^2) / (4 G tau) */
     k2[k] = tau * om * om;
     k3[k] = 2.0 * G * tau * tau * f;
-    for (c = 0; c < 3; c++) a[k][c] = particles_comp(ps, m->field[k], c);
+    for (c = 0; c < MAT_NDEV; c++) a[k][c] = particles_comp(ps, m->field[k], c);
   }
   for (i = i0; i < i1; i++) {
-    double J, tr, cs, sn, dd, w = 0, en;
+    double J, tr, dd, w = 0, en;
+    mat_rot rot;
     if (bmat[ps->body[i]] != id) continue;
     mat_get(ps, i, s);
-    J = mat_kinematics(ps, i, dt, s, D);
-    mat_rotation(ps, i, dt, &cs, &sn);
-#if DIM == 2
-    tr = D[S_XX] + D[S_YY];
+    J = mat_kinematics(ps, i, dt, s, D, &rot);
+    /* plane strain: D_zz = 0, so d_zz = -tr D / 3 */
+    tr = D[S_XX] + D[S_YY] + D[S_ZZ];
+    for (c = 0; c < NSTRESS; c++) d[c] = D[c];
     d[S_XX] = D[S_XX] - tr / 3.0;
     d[S_YY] = D[S_YY] - tr / 3.0;
-    d[S_ZZ] = -tr / 3.0;
-    d[S_XY] = D[S_XY];
+    d[S_ZZ] = D[S_ZZ] - tr / 3.0;
     dd = ddot(d, d);
     /* pressure and long-term part */
     for (c = 0; c < NSTRESS; c++) s[c] += g2 * dt * d[c];
@@ -109,9 +113,8 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     en = 0;
     for (k = 0; k < n; k++) {
       double x[NSTRESS], y[NSTRESS];
-      x[S_XX] = a[k][0][i]; x[S_YY] = a[k][1][i]; x[S_XY] = a[k][2][i];
-      x[S_ZZ] = 0;
-      mat_rotate(cs, sn, x);
+      dev_get(a[k], i, x);
+      mat_rotate(&rot, x);
       x[S_ZZ] = -(x[S_XX] + x[S_YY]);
       for (c = 0; c < NSTRESS; c++) {
         y[c] = e[k] * x[c] + B[k] * d[c];
@@ -119,9 +122,8 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
       }
       w += k1[k] * ddot(x, x) + k2[k] * ddot(x, d) + k3[k] * dd;
       en += ddot(y, y) / (4.0 * m->prony_G[k]);
-      a[k][0][i] = y[S_XX]; a[k][1][i] = y[S_YY]; a[k][2][i] = y[S_XY];
+      for (c = 0; c < MAT_NDEV; c++) a[k][c][i] = y[mat_dev_slot(c)];
     }
-#endif
     vw[i] += w;
     visc += ps->vol0[i] * w;
     if (hq) hq[i] += ps->vol0[i] * w; /* heat.h: all of it is heat */
@@ -133,8 +135,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
       en += p * p / (2.0 * K);
       if (m->G_inf > 0) {
         for (k = 0; k < n; k++) {
-          dv[S_XX] -= a[k][0][i]; dv[S_YY] -= a[k][1][i];
-          dv[S_XY] -= a[k][2][i];
+          for (c = 0; c < MAT_NDEV; c++) dv[mat_dev_slot(c)] -= a[k][c][i];
           dv[S_ZZ] += a[k][0][i] + a[k][1][i];
         }
         r = ddot(dv, dv);
@@ -155,14 +156,12 @@ static double energy(const material *m, const particles *ps, size_t i) {
   mat_get(ps, i, s);
   (void)mat_deviator(s, &p, dv);
   for (k = 0; k < m->nprony; k++) {
-    const double *xx = particles_comp(ps, m->field[k], 0);
-    const double *yy = particles_comp(ps, m->field[k], 1);
-    const double *xy = particles_comp(ps, m->field[k], 2);
-    double x[NSTRESS];
-    x[S_XX] = xx[i]; x[S_YY] = yy[i]; x[S_XY] = xy[i];
-    x[S_ZZ] = -(xx[i] + yy[i]);
+    double *ak[MAT_NDEV], x[NSTRESS];
+    int c;
+    for (c = 0; c < MAT_NDEV; c++) ak[c] = particles_comp(ps, m->field[k], c);
+    dev_get(ak, i, x);
     en += ddot(x, x) / (4.0 * m->prony_G[k]);
-    for (int c = 0; c < NSTRESS; c++) dv[c] -= x[c];
+    for (c = 0; c < NSTRESS; c++) dv[c] -= x[c];
   }
   en += p * p / (2.0 * m->K);
   if (m->G_inf > 0) en += ddot(dv, dv) / (4.0 * m->G_inf);

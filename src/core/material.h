@@ -19,6 +19,7 @@
 #include <stdint.h>
 #include "dim.h"
 #include "particles.h"
+#include "vec.h"
 
 typedef struct material material;
 
@@ -122,90 +123,152 @@ static inline double mat_elastic_density(const double *s, double K, double G) {
   double p = (s[S_XX] + s[S_YY] + s[S_ZZ]) / 3.0;
   double dx = s[S_XX] - p, dy = s[S_YY] - p, dz = s[S_ZZ] - p;
   double ss = dx * dx + dy * dy + dz * dz + 2 * s[S_XY] * s[S_XY];
-#else
+#elif DIM == 3
   double p = (s[S_XX] + s[S_YY] + s[S_ZZ]) / 3.0;
   double dx = s[S_XX] - p, dy = s[S_YY] - p, dz = s[S_ZZ] - p;
   double ss = dx * dx + dy * dy + dz * dz +
               2 * (s[S_XY] * s[S_XY] + s[S_YZ] * s[S_YZ] + s[S_XZ] * s[S_XZ]);
+#else
+#error "mat_elastic_density: DIM must be 2 or 3"
 #endif
   return p * p / (2 * K) + ss / (4 * G);
 }
 
 /*
 ** The incremental rotation of particle i over the step: Hughes-Winget,
-** R = (I - W dt/2)^-1 (I + W dt/2), a rotation by an angle theta with
-** cos = (1 - a^2)/(1 + a^2), sin = 2a/(1 + a^2), a = dt W_yx / 2 ...
-** written out for 2-D so it stays exactly orthogonal.  Models with
-** stress-like state besides the stress rotate it with the same (cs, sn).
+** R = (I - A)^-1 (I + A), A = dt W / 2, W the spin.  For a skew A with
+** axial vector a this is R = I + 2 (A + A^2) / (1 + |a|^2), exactly
+** orthogonal however large the step; in 2-D it is a rotation by theta
+** with cos = (1 - a^2)/(1 + a^2), sin = 2a/(1 + a^2), a = dt W_yx / 2,
+** written out so.  Models with stress-like state besides the stress
+** rotate it with the same R.
 */
+typedef struct mat_rot {
+#if DIM == 2
+  double cs, sn;
+#elif DIM == 3
+  double R[9];
+#else
+#error "mat_rot: DIM must be 2 or 3"
+#endif
+} mat_rot;
+
 static inline void mat_rotation(const particles *ps, size_t i, double dt,
-                                double *cs, double *sn) {
+                                mat_rot *r) {
 #if DIM == 2
   double a = 0.25 * dt * (ps->L[2][i] - ps->L[1][i]);
   double c2 = 1.0 + a * a;
-  *cs = (1.0 - a * a) / c2;
-  *sn = 2.0 * a / c2;
+  r->cs = (1.0 - a * a) / c2;
+  r->sn = 2.0 * a / c2;
+#elif DIM == 3
+  double a[3], q;
+  int p, k;
+  a[0] = 0.25 * dt * (ps->L[7][i] - ps->L[5][i]);
+  a[1] = 0.25 * dt * (ps->L[2][i] - ps->L[6][i]);
+  a[2] = 0.25 * dt * (ps->L[3][i] - ps->L[1][i]);
+  q = 2.0 / (1.0 + a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+  /* A + A^2 = A + a a^T - |a|^2 I */
+  for (p = 0; p < 3; p++)
+    for (k = 0; k < 3; k++)
+      r->R[3 * p + k] = (p == k) + q * (a[p] * a[k] - (p == k) *
+                        (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]));
+  r->R[1] -= q * a[2]; r->R[3] += q * a[2];
+  r->R[2] += q * a[1]; r->R[6] -= q * a[1];
+  r->R[5] -= q * a[0]; r->R[7] += q * a[0];
 #else
-#error "mat_rotation: 3-D not written yet"
+#error "mat_rotation: DIM must be 2 or 3"
 #endif
 }
 
-/* rotate the in-plane part of a symmetric tensor in stress order */
-static inline void mat_rotate(double cs, double sn, double *s) {
+/* s <- R s R^T for a symmetric tensor in stress order (in 2-D the
+** in-plane part: zz is the rotation's axis) */
+static inline void mat_rotate(const mat_rot *r, double *s) {
 #if DIM == 2
+  double cs = r->cs, sn = r->sn;
   double sxx = s[S_XX], syy = s[S_YY], sxy = s[S_XY];
   double cc = cs * cs, ssn = sn * sn, b = 2.0 * cs * sn * sxy;
   s[S_XX] = cc * sxx + ssn * syy - b;
   s[S_YY] = ssn * sxx + cc * syy + b;
   s[S_XY] = cs * sn * (sxx - syy) + (cc - ssn) * sxy;
+#elif DIM == 3
+  const double *R = r->R;
+  double S[9], T[9];
+  int p, k, m;
+  for (p = 0; p < 3; p++)
+    for (k = 0; k < 3; k++) S[3 * p + k] = s[vec_sym(p, k)];
+  for (p = 0; p < 3; p++) /* T = R S */
+    for (k = 0; k < 3; k++)
+      T[3 * p + k] = R[3 * p] * S[k] + R[3 * p + 1] * S[3 + k] +
+                     R[3 * p + 2] * S[6 + k];
+  for (p = 0; p < 3; p++) /* (T R^T)_pk, upper triangle */
+    for (k = p; k < 3; k++) {
+      double v = 0;
+      for (m = 0; m < 3; m++) v += T[3 * p + m] * R[3 * k + m];
+      s[vec_sym(p, k)] = v;
+    }
+#else
+#error "mat_rotate: DIM must be 2 or 3"
 #endif
 }
 
 /*
 ** The kinematic part every model shares, for particle i: D (symmetric,
 ** stored as NSTRESS components in stress order, zz = 0 in plane strain),
-** the incremental rotation applied to the stress in s[], and F <- (I +
-** dt L) F.  Returns det F.
+** the incremental rotation applied to the stress in s[] (and returned in
+** r for the models' other state), and F <- (I + dt L) F.  Returns det F.
 */
 static inline double mat_kinematics(particles *ps, size_t i, double dt,
-                                    double *s, double *D) {
+                                    double *s, double *D, mat_rot *r) {
 #if DIM == 2
   double L00 = ps->L[0][i], L01 = ps->L[1][i];
   double L10 = ps->L[2][i], L11 = ps->L[3][i];
   double F00 = ps->F[0][i], F01 = ps->F[1][i];
   double F10 = ps->F[2][i], F11 = ps->F[3][i];
-  double cs, sn;
   D[S_XX] = L00;
   D[S_YY] = L11;
   D[S_XY] = 0.5 * (L01 + L10);
   D[S_ZZ] = 0.0;
-  mat_rotation(ps, i, dt, &cs, &sn);
-  mat_rotate(cs, sn, s);
+  mat_rotation(ps, i, dt, r);
+  mat_rotate(r, s);
   ps->F[0][i] = F00 + dt * (L00 * F00 + L01 * F10);
   ps->F[1][i] = F01 + dt * (L00 * F01 + L01 * F11);
   ps->F[2][i] = F10 + dt * (L10 * F00 + L11 * F10);
   ps->F[3][i] = F11 + dt * (L10 * F01 + L11 * F11);
   return ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
+#elif DIM == 3
+  double L[9], F[9], G[9];
+  int p, k;
+  for (k = 0; k < 9; k++) { L[k] = ps->L[k][i]; F[k] = ps->F[k][i]; }
+  for (p = 0; p < 3; p++)
+    for (k = p; k < 3; k++) D[vec_sym(p, k)] = 0.5 * (L[3 * p + k] + L[3 * k + p]);
+  mat_rotation(ps, i, dt, r);
+  mat_rotate(r, s);
+  for (p = 0; p < 3; p++)
+    for (k = 0; k < 3; k++)
+      G[3 * p + k] = F[3 * p + k] + dt * (L[3 * p] * F[k] + L[3 * p + 1] * F[3 + k] +
+                                          L[3 * p + 2] * F[6 + k]);
+  for (k = 0; k < 9; k++) ps->F[k][i] = G[k];
+  return vec_det(G);
 #else
-#error "mat_kinematics: 3-D not written yet"
+#error "mat_kinematics: DIM must be 2 or 3"
 #endif
 }
 
 /* split a stress into its mean p and deviator d (all NSTRESS components,
 ** zz included); returns |d|^2 with the shear counted twice (d : d) */
 static inline double mat_deviator(const double *s, double *p, double *d) {
-#if DIM == 2
-  double m = (s[S_XX] + s[S_YY] + s[S_ZZ]) / 3.0;
+  double m = (s[S_XX] + s[S_YY] + s[S_ZZ]) / 3.0, dd = 0;
+  int c;
+  for (c = 0; c < NSTRESS; c++) d[c] = s[c];
   d[S_XX] = s[S_XX] - m;
   d[S_YY] = s[S_YY] - m;
   d[S_ZZ] = s[S_ZZ] - m;
-  d[S_XY] = s[S_XY];
   *p = m;
-  return d[S_XX] * d[S_XX] + d[S_YY] * d[S_YY] + d[S_ZZ] * d[S_ZZ] +
-         2.0 * d[S_XY] * d[S_XY];
-#else
-#error "mat_deviator: 3-D not written yet"
-#endif
+  /* the normal parts once, the shears twice: 2-D's order of sums kept */
+  dd = d[S_XX] * d[S_XX] + d[S_YY] * d[S_YY] + d[S_ZZ] * d[S_ZZ];
+  for (c = 0; c < NSTRESS; c++)
+    if (c != S_XX && c != S_YY && c != S_ZZ) dd += 2.0 * d[c] * d[c];
+  return dd;
 }
 
 /* the isotropic elastic increment over dt, s += lambda tr(D) dt I +
@@ -219,9 +282,31 @@ static inline void mat_hooke(double *s, const double *D, double dt,
   s[S_YY] += lam * tr + g2 * dt * D[S_YY];
   s[S_XY] += g2 * dt * D[S_XY];
   s[S_ZZ] += lam * tr;
+#elif DIM == 3
+  double tr = dt * (D[S_XX] + D[S_YY] + D[S_ZZ]);
+  int c;
+  for (c = 0; c < NSTRESS; c++) s[c] += g2 * dt * D[c];
+  s[S_XX] += lam * tr;
+  s[S_YY] += lam * tr;
+  s[S_ZZ] += lam * tr;
 #else
-#error "mat_hooke: 3-D not written yet"
+#error "mat_hooke: DIM must be 2 or 3"
 #endif
+}
+
+/* a deviator stored without its zz, which is -(xx + yy): MAT_NDEV
+** components, the c-th in stress slot mat_dev_slot(c) */
+#define MAT_NDEV (NSTRESS - 1)
+static inline int mat_dev_slot(int c) { return c < S_ZZ ? c : c + 1; }
+
+/* a : b of two symmetric tensors in stress order (zz included, each
+** shear twice): the normal parts first, then the shears */
+static inline double mat_ddot(const double *a, const double *b) {
+  double r = a[S_XX] * b[S_XX] + a[S_YY] * b[S_YY] + a[S_ZZ] * b[S_ZZ];
+  int c;
+  for (c = 0; c < NSTRESS; c++)
+    if (c != S_XX && c != S_YY && c != S_ZZ) r += 2.0 * a[c] * b[c];
+  return r;
 }
 
 /* gather / scatter the stress of particle i */
@@ -237,9 +322,11 @@ static inline void mat_put(particles *ps, size_t i, const double *s) {
 static inline double mat_power(const double *s, const double *D) {
 #if DIM == 2
   return s[S_XX] * D[S_XX] + s[S_YY] * D[S_YY] + 2 * s[S_XY] * D[S_XY];
-#else
+#elif DIM == 3
   return s[S_XX] * D[S_XX] + s[S_YY] * D[S_YY] + s[S_ZZ] * D[S_ZZ] +
          2 * (s[S_XY] * D[S_XY] + s[S_YZ] * D[S_YZ] + s[S_XZ] * D[S_XZ]);
+#else
+#error "mat_power: DIM must be 2 or 3"
 #endif
 }
 static inline void mat_sum_j(mat_sums *sum, double J) {

@@ -17,6 +17,7 @@
 #include "bands.h"
 #include "par.h"
 #include "stencil.h"
+#include "vec.h"
 
 /* what a scatter adds: everything, or (USAVG) all but the forces, or
 ** the forces alone */
@@ -32,37 +33,45 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double gx = s->gravity[0], gy = s->gravity[1], lp = s->lp;
-  const int nw = shape_width(kind);
+  const double lp = s->lp;
+  const int rowlen = stencil_rowlen(kind);
+  double grav[DIM];
   /* distinct arrays: restrict lets the compiler keep loads ahead of
   ** stores to the other arrays */
-  double *restrict gm = g->m, *restrict gpx = g->p[0], *restrict gpy = g->p[1];
-  double *restrict gfx = g->f[0], *restrict gfy = g->f[1];
+  double *restrict gm = g->m;
+  double *restrict gp[DIM], *restrict gf[DIM];
   const int byvol = s->normals != NORMALS_MASS;
   double *const *sgrad = byvol ? g->sv : g->sg;
   const int plane = what != P2G_FORCE && shared && s->normals == NORMALS_PLANE;
   const int mass = what != P2G_FORCE, force = what != P2G_MASS;
-  const double *c00 = NULL, *c01 = NULL, *c10 = NULL, *c11 = NULL;
+  const double *C[NTENS] = {NULL};
   double r[DIM][STENCIL_MAX];
   unsigned char mine[SHAPE_MAXW];
   stencil_geo geo;
   stencil st;
   size_t i;
-  stencil_geo_init(&geo, g);
-  if (apic) {
-    c00 = particles_comp(ps, s->faff, 0); c01 = particles_comp(ps, s->faff, 1);
-    c10 = particles_comp(ps, s->faff, 2); c11 = particles_comp(ps, s->faff, 3);
+  int a, b;
+  for (a = 0; a < DIM; a++) {
+    grav[a] = s->gravity[a];
+    gp[a] = g->p[a];
+    gf[a] = g->f[a];
   }
+  stencil_geo_init(&geo, g);
+  if (apic)
+    for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   for (i = i0; i < i1; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    double mp = ps->m[i], vx0 = ps->v[0][i], vy0 = ps->v[1][i];
-    double J = ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
-    double V = J * ps->vol0[i];
-    double sxx = V * ps->s[S_XX][i], syy = V * ps->s[S_YY][i];
-    double sxy = V * ps->s[S_XY][i];
+    double x[DIM], v0[DIM], F[NTENS], sv[DIM][DIM];
+    double mp = ps->m[i], J, V;
     int32_t f = bd[ps->body[i]].field;
-    const double wg = byvol ? V : mp; /* the normals' weight */
+    double wg;
     int k;
+    for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; v0[a] = ps->v[a][i]; }
+    for (a = 0; a < NTENS; a++) F[a] = ps->F[a][i];
+    J = vec_det(F);
+    V = J * ps->vol0[i];
+    for (a = 0; a < DIM; a++)
+      for (b = 0; b < DIM; b++) sv[a][b] = V * ps->s[vec_sym(a, b)][i];
+    wg = byvol ? V : mp; /* the normals' weight */
     if (split &&
         !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
       continue;
@@ -70,39 +79,37 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     else stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
-      double w = st.w[k], dx = st.dw[0][k], dy = st.dw[1][k];
-      double wm = w * mp, vx = vx0, vy = vy0;
-      if (split && !mine[k / nw]) continue;
-      if (apic && mass) { /* the particle's affine velocity at the node */
-        vx += c00[i] * r[0][k] + c01[i] * r[1][k];
-        vy += c10[i] * r[0][k] + c11[i] * r[1][k];
+      double w = st.w[k], wm = w * mp, v[DIM], fo[DIM];
+      if (split && !mine[k / rowlen]) continue;
+      for (a = 0; a < DIM; a++) {
+        double sd = 0;
+        v[a] = v0[a];
+        if (apic && mass) { /* the particle's affine velocity at the node */
+          double cr = 0;
+          for (b = 0; b < DIM; b++) cr += C[a * DIM + b][i] * r[b][k];
+          v[a] += cr;
+        }
+        for (b = 0; b < DIM; b++) sd += sv[a][b] * st.dw[b][k];
+        fo[a] = wm * grav[a] - sd;
       }
-      double fx = wm * gx - (sxx * dx + sxy * dy);
-      double fy = wm * gy - (sxy * dx + syy * dy);
       if (mass) {
         gm[n] += wm;
-        gpx[n] += wm * vx;
-        gpy[n] += wm * vy;
+        for (a = 0; a < DIM; a++) gp[a][n] += wm * v[a];
       }
-      if (force) {
-        gfx[n] += fx;
-        gfy[n] += fy;
-      }
+      if (force)
+        for (a = 0; a < DIM; a++) gf[a][n] += fo[a];
       if (shared && g->head[n] >= 0) {
         int32_t sl = grid_slot(g, n, f);
-        if (force) {
-          g->sf[0][sl] += fx;
-          g->sf[1][sl] += fy;
-        }
+        if (force)
+          for (a = 0; a < DIM; a++) g->sf[a][sl] += fo[a];
         if (!mass) continue;
         g->sm[sl] += wm;
-        g->sp[0][sl] += wm * vx;
-        g->sp[1][sl] += wm * vy;
-        sgrad[0][sl] += wg * dx;
-        sgrad[1][sl] += wg * dy;
+        for (a = 0; a < DIM; a++) {
+          g->sp[a][sl] += wm * v[a];
+          sgrad[a][sl] += wg * st.dw[a][k];
+        }
         if (plane) { /* moments of r / h, weighted w V */
           double wv = w * V, u[DIM];
-          int a, b;
           for (a = 0; a < DIM; a++) u[a] = r[a][k] * g->inv_h;
           g->sw[sl] += wv;
           for (a = 0; a < DIM; a++) {

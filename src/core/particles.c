@@ -8,13 +8,8 @@
 #include "particles.h"
 
 static const char *xyz[] = {"x", "y", "z"};
-#if DIM == 2
-static const char *tens[] = {"xx", "xy", "yx", "yy"};
-static const char *sten[] = {"xx", "yy", "xy", "zz"};
-#else
-static const char *tens[] = {"xx", "xy", "xz", "yx", "yy", "yz", "zx", "zy", "zz"};
-static const char *sten[] = {"xx", "yy", "zz", "xy", "yz", "xz"};
-#endif
+static const char *tens[] = DIM_TENSOR_NAMES;
+static const char *sten[] = DIM_STRESS_NAMES;
 
 static int add(particles *ps, const char *name, int ncomp, int type,
                const char *unit, unsigned flags, void **slots[],
@@ -57,7 +52,7 @@ void particles_init(particles *ps) {
   s[0] = (void **)&ps->m;
   add(ps, "mass", 1, PF_DOUBLE, "M", PF_OUTPUT | PF_RESTART, s, NULL);
   s[0] = (void **)&ps->vol0;
-  add(ps, "volume0", 1, PF_DOUBLE, DIM == 2 ? "L^2" : "L^3", PF_OUTPUT | PF_RESTART, s, NULL);
+  add(ps, "volume0", 1, PF_DOUBLE, DIM_VOLUME_UNIT, PF_OUTPUT | PF_RESTART, s, NULL);
   for (d = 0; d < NTENS; d++) s[d] = (void **)&ps->F[d];
   add(ps, "F", NTENS, PF_DOUBLE, "1", PF_OUTPUT | PF_RESTART, s, tens);
   for (d = 0; d < NTENS; d++) s[d] = (void **)&ps->L[d];

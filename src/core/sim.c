@@ -11,6 +11,7 @@
 #include "react.h"
 #include "shape.h"
 #include "sim.h"
+#include "vec.h"
 #include "thermal.h"
 
 int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
@@ -303,10 +304,10 @@ void sim_measure(sim *s) {
   const particles *ps = &s->ps;
   size_t i;
   int d;
-  double ke = 0, se = 0, am = 0, v2max = 0, pe = 0;
+  double ke = 0, se = 0, am[NANG] = {0}, v2max = 0, pe = 0;
   for (d = 0; d < DIM; d++) s->e.mom[d] = 0;
   for (i = 0; i < ps->n; i++) {
-    double v2 = 0;
+    double v2 = 0, x[DIM], v[DIM];
     int32_t mi = s->bmat[ps->body[i]];
     for (d = 0; d < DIM; d++) {
       v2 += ps->v[d][i] * ps->v[d][i];
@@ -316,12 +317,13 @@ void sim_measure(sim *s) {
     if (v2 > v2max) v2max = v2;
     ke += 0.5 * ps->m[i] * v2;
     if (mi >= 0) se += s->mats[mi].model->energy(&s->mats[mi], ps, i);
-    am += ps->m[i] * (ps->x[0][i] * ps->v[1][i] - ps->x[1][i] * ps->v[0][i]);
+    for (d = 0; d < DIM; d++) { x[d] = ps->x[d][i]; v[d] = ps->v[d][i]; }
+    vec_moment(am, ps->m[i], x, v);
   }
   s->e.kinetic = ke + g2p_affine_energy(s);
   s->e.strain = se;
   s->e.potential = pe;
-  s->e.angmom = am;
+  s->e.angmom = am[0];
   s->vmax = sqrt(v2max);
 }
 

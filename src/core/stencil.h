@@ -95,8 +95,27 @@ STENCIL_INLINE void stencil_eval(const stencil_geo *geo, int kind,
       st->dw[0][k] = dx[a] * wy[b];
       st->dw[1][k] = wx[a] * dy[b];
     }
+#elif DIM == 3
+  {
+    int32_t iz[SHAPE_MAXW], plane = geo->n[0] * geo->n[1];
+    double wz[SHAPE_MAXW], dz[SHAPE_MAXW];
+    int c;
+    stencil_1d(geo, kind, 2, x[2], lp, iz, wz, dz);
+    for (c = 0; c < nw; c++)
+      for (b = 0; b < nw; b++) {
+        int32_t row = geo->n[0] * iy[b] + plane * iz[c];
+        double wyz = wy[b] * wz[c], dyz = dy[b] * wz[c], wdz = wy[b] * dz[c];
+        for (a = 0; a < nw; a++, k++) {
+          st->node[k] = ix[a] + row;
+          st->w[k] = wx[a] * wyz;
+          st->dw[0][k] = dx[a] * wyz;
+          st->dw[1][k] = wx[a] * dyz;
+          st->dw[2][k] = wx[a] * wdz;
+        }
+      }
+  }
 #else
-#error "stencil_eval: 3-D not written yet"
+#error "stencil_eval: DIM must be 2 or 3"
 #endif
   st->n = k;
 }
@@ -110,45 +129,67 @@ STENCIL_INLINE void stencil_eval(const stencil_geo *geo, int kind,
 STENCIL_INLINE void stencil_eval_r(const stencil_geo *geo, int kind,
                                    const double *x, double lp, stencil *st,
                                    double r[DIM][STENCIL_MAX]) {
-  double rx[SHAPE_MAXW], ry[SHAPE_MAXW], h = 1.0 / geo->inv_h;
-  double xi = (x[0] - geo->lo[0]) * geo->inv_h + geo->off[0];
-  double yi = (x[1] - geo->lo[1]) * geo->inv_h + geo->off[1];
-  /* the first node of the stencil, as shape.h chooses it */
-  int i0 = kind == SHAPE_LINEAR ? (int)floor(xi)
-           : kind == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
-                                : (int)floor(xi - 0.5);
-  int j0 = kind == SHAPE_LINEAR ? (int)floor(yi)
-           : kind == SHAPE_GIMP ? (int)floor(yi + 0.5) - 1
-                                : (int)floor(yi - 0.5);
-  int nw = shape_width(kind), a, b, k = 0;
+  double rr[DIM][SHAPE_MAXW], h = 1.0 / geo->inv_h;
+  int nw = shape_width(kind), a, b, k = 0, d;
   stencil_eval(geo, kind, x, lp, st);
-  for (a = 0; a < nw; a++) {
-    rx[a] = (i0 + a - xi) * h;
-    ry[a] = (j0 + a - yi) * h;
+  for (d = 0; d < DIM; d++) {
+    double xi = (x[d] - geo->lo[d]) * geo->inv_h + geo->off[d];
+    /* the first node of the stencil, as shape.h chooses it */
+    int i0 = kind == SHAPE_LINEAR ? (int)floor(xi)
+             : kind == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
+                                  : (int)floor(xi - 0.5);
+    for (a = 0; a < nw; a++) rr[d][a] = (i0 + a - xi) * h;
   }
 #if DIM == 2
   for (b = 0; b < nw; b++)
     for (a = 0; a < nw; a++, k++) {
-      r[0][k] = rx[a];
-      r[1][k] = ry[b];
+      r[0][k] = rr[0][a];
+      r[1][k] = rr[1][b];
     }
+#elif DIM == 3
+  {
+    int c;
+    for (c = 0; c < nw; c++)
+      for (b = 0; b < nw; b++)
+        for (a = 0; a < nw; a++, k++) {
+          r[0][k] = rr[0][a];
+          r[1][k] = rr[1][b];
+          r[2][k] = rr[2][c];
+        }
+  }
+#else
+#error "stencil_eval_r: DIM must be 2 or 3"
 #endif
 }
 
-/* node indices only (for marking shared nodes) */
+/* stencil entries per node row along the last dimension: entry k lies
+** on row k / stencil_rowlen (bands.h) */
+STENCIL_INLINE int stencil_rowlen(int kind) {
+  int r = 1, d;
+  for (d = 1; d < DIM; d++) r *= shape_width(kind);
+  return r;
+}
+
+/* node indices only (for marking shared nodes), in stencil_eval's order */
 STENCIL_INLINE int stencil_nodes(const grid *g, int kind, const double *x,
                                  int32_t *node) {
-  int nw = shape_width(kind), a, b, k = 0, d;
+  int nw = shape_width(kind), a, k = 0, d, n = 1;
   int32_t idx[DIM][SHAPE_MAXW];
+  int i[DIM];
   for (d = 0; d < DIM; d++) {
     double xi = (x[d] - g->lo[d]) * g->inv_h + (g->periodic[d] ? 0 : g->pad);
     int i0 = kind == SHAPE_LINEAR  ? (int)floor(xi)
              : kind == SHAPE_GIMP  ? (int)floor(xi + 0.5) - 1
                                    : (int)floor(xi - 0.5);
     for (a = 0; a < nw; a++) idx[d][a] = grid_wrap(g, d, i0 + a);
+    n *= nw;
   }
-  for (b = 0; b < nw; b++)
-    for (a = 0; a < nw; a++) node[k++] = idx[0][a] + g->n[0] * idx[1][b];
+  /* an odometer over the DIM indices, x fastest */
+  for (k = 0; k < n; k++) {
+    int c = k;
+    for (d = 0; d < DIM; d++) { i[d] = idx[d][c % nw]; c /= nw; }
+    node[k] = grid_node(g, i);
+  }
   return k;
 }
 

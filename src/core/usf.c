@@ -49,31 +49,32 @@ STENCIL_INLINE void gradient_kind(sim *s, const int kind, const int shared,
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double lp = s->lp;
-  const double *restrict gqx = g->q[0], *restrict gqy = g->q[1];
+  const double *restrict gq[DIM];
   stencil_geo geo;
   stencil st;
   size_t i;
+  int a, c;
+  for (a = 0; a < DIM; a++) gq[a] = g->q[a];
   stencil_geo_init(&geo, g);
   for (i = i0; i < i1; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    double l00 = 0, l01 = 0, l10 = 0, l11 = 0;
+    double x[DIM], l[NTENS] = {0};
     int32_t f = bd[ps->body[i]].field;
     int k;
+    for (a = 0; a < DIM; a++) x[a] = ps->x[a][i];
     stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
-      double dx = st.dw[0][k], dy = st.dw[1][k], qx, qy;
+      double q[DIM];
       if (shared && g->head[n] >= 0) {
         int32_t sl = grid_slot(g, n, f);
-        qx = g->sq[0][sl]; qy = g->sq[1][sl];
+        for (a = 0; a < DIM; a++) q[a] = g->sq[a][sl];
       } else {
-        qx = gqx[n]; qy = gqy[n];
+        for (a = 0; a < DIM; a++) q[a] = gq[a][n];
       }
-      l00 += qx * dx; l01 += qx * dy;
-      l10 += qy * dx; l11 += qy * dy;
+      for (a = 0; a < DIM; a++)
+        for (c = 0; c < DIM; c++) l[a * DIM + c] += q[a] * st.dw[c][k];
     }
-    ps->L[0][i] = l00; ps->L[1][i] = l01;
-    ps->L[2][i] = l10; ps->L[3][i] = l11;
+    for (a = 0; a < NTENS; a++) ps->L[a][i] = l[a];
   }
 }
 

@@ -49,6 +49,29 @@ static inline double vec_nsn(const double *S, const double *n) {
   return r;
 }
 
+/* components of an angular momentum: its z alone in 2-D */
+#if DIM == 2
+#define NANG 1
+#elif DIM == 3
+#define NANG 3
+#else
+#error "NANG: DIM must be 2 or 3"
+#endif
+
+/* am += m (x cross v) */
+static inline void vec_moment(double *am, double m, const double *x,
+                              const double *v) {
+#if DIM == 2
+  am[0] += m * (x[0] * v[1] - x[1] * v[0]);
+#elif DIM == 3
+  am[0] += m * (x[1] * v[2] - x[2] * v[1]);
+  am[1] += m * (x[2] * v[0] - x[0] * v[2]);
+  am[2] += m * (x[0] * v[1] - x[1] * v[0]);
+#else
+#error "vec_moment: DIM must be 2 or 3"
+#endif
+}
+
 /* determinant of a full tensor */
 static inline double vec_det(const double *T) {
 #if DIM == 2

@@ -11,6 +11,8 @@
 --   3. A body given angular_velocity w spins rigidly: its particles'
 --      angular momentum about the centroid is w sum m r^2 (2-D,
 --      b:diag()), and its centre of mass is at rest.
+--      Any dimension: each particle moves at v0 + w x (x - c), c the
+--      seeded centroid, and the centre of mass at v0.
 --   4. A ball across a periodic seam seeds its image (the whole ball's
 --      measure); a body from points (x, y[, z]) has the points' mass.
 --   5. Bad shapes are refused with the field and the expected count.
@@ -136,6 +138,59 @@ if D == 2 then
          2 * (d.inertia - d.mass * a * a / 6), 1e-12, true)
   V.near("centre-of-mass velocity x", d.vx, 0, 1e-14)
   V.near("centre-of-mass velocity y", d.vy, 0, 1e-14)
+end
+
+V.case("angular_velocity: every particle moves at v + w x (x - c)")
+do
+  local sp = mvmpm.sim {domain = domain(), cell = 0.1, dim = D}
+  local v0, w = P(0.1, -0.2, 0.3), D == 2 and 1.5 or {1, -2, 3}
+  local b = sp:body {shape = mvmpm.ball {center = P(0.4, 0.5, 0.6), radius = 0.3},
+                     material = mvmpm.elastic {K = 1, G = 1, density = 1},
+                     velocity = v0, angular_velocity = w}
+  local x, v = sp:particles("position"), sp:particles("velocity")
+  local n, c = #x.x, {0, 0, 0}
+  local ax = {"x", "y", "z"}
+  for d = 1, D do
+    for k = 1, n do c[d] = c[d] + x[ax[d]][k] / n end
+  end
+  local w3 = D == 2 and {0, 0, w} or w
+  local worst = 0
+  for k = 1, n do
+    local r = {0, 0, 0}
+    for d = 1, D do r[d] = x[ax[d]][k] - c[d] end
+    local cross = {w3[2] * r[3] - w3[3] * r[2], w3[3] * r[1] - w3[1] * r[3],
+                   w3[1] * r[2] - w3[2] * r[1]}
+    for d = 1, D do
+      worst = math.max(worst, math.abs(v[ax[d]][k] - v0[d] - cross[d]))
+    end
+  end
+  V.holds("particles seeded", n > 0 and b:mass() > 0, n)
+  V.below("largest |v - v0 - w x r|", worst, 1e-12)
+  local vc = {b:velocity()}
+  V.near("centre-of-mass velocity x", vc[1], v0[1], 1e-12)
+  V.near("centre-of-mass velocity " .. ax[D], vc[D], v0[D], 1e-12)
+end
+
+V.case("angular_velocity under APIC: the affine field is the spin, C = [w]x")
+do
+  local sp = mvmpm.sim {domain = domain(), cell = 0.1, dim = D, transfer = "apic", shape = "gimp"}
+  local w = D == 2 and 1.5 or {1, -2, 3}
+  sp:body {shape = mvmpm.ball {center = P(0.4, 0.5, 0.6), radius = 0.3},
+           material = mvmpm.elastic {K = 1, G = 1, density = 1}, angular_velocity = w}
+  local C, w3 = sp:particles("affine"), D == 2 and {0, 0, w} or w
+  local ax = {"x", "y", "z"}
+  -- [w]x: C_ab = -e_abc w_c
+  local want = {xy = -w3[3], yx = w3[3], xz = w3[2], zx = -w3[2], yz = -w3[1], zy = w3[1]}
+  local worst = 0
+  for a = 1, D do
+    for b = 1, D do
+      local key = ax[a] .. ax[b]
+      for k = 1, #C[key] do
+        worst = math.max(worst, math.abs(C[key][k] - (want[key] or 0)))
+      end
+    end
+  end
+  V.below("largest |C - [w]x| over the particles", worst, 0)
 end
 
 V.case("bad shapes: the field and the expected count")

@@ -17,6 +17,7 @@
 int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
              const int periodic[DIM], int shape, int ppc) {
   int k, d;
+  size_t most = 0;
   memset(s, 0, sizeof *s);
   s->shape = shape;
   s->update = UPDATE_MUSL;
@@ -51,13 +52,16 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   for (k = 0; k < NSIDES; k++) {
     d = k / 2;
     s->sides[k].kind = periodic[d] ? SIDE_PERIODIC : SIDE_WALL;
-    s->sides[k].next = (size_t)s->g.n[1 - d];
+    s->sides[k].next = grid_face_count(&s->g, d);
+    if (s->sides[k].next > most) most = s->sides[k].next;
     s->sides[k].ext = malloc(s->sides[k].next * sizeof(double));
-    /* the wall line and the ghost lines beyond it */
+    /* the wall plane and the ghost planes beyond it */
     s->sides[k].acted = calloc((size_t)(s->g.pad + 1) * s->sides[k].next, 1);
     s->sides[k].hm = calloc((size_t)(s->g.pad + 2) * s->sides[k].next, sizeof(double));
     if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm) return -1;
   }
+  s->wpatch = malloc((4 * most + 1) * sizeof *s->wpatch);
+  if (!s->wpatch) return -1;
   return 0;
 }
 
@@ -81,6 +85,7 @@ void sim_free(sim *s) {
   marks_free(&s->marks);
   free(s->red);
   free(s->wext);
+  free(s->wpatch);
   free(s->crec);
   free(s->cbody);
   free(s->bfit);

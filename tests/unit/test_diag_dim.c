@@ -4,8 +4,10 @@
 ** cube (a square in 2-D) of particles whose answers are known.
 */
 #include "diag.h"
+#include "diag_hotspot.h"
 #include "diag_overlap.h"
 #include "shape.h"
+#include "thermal.h"
 #include "unit.h"
 
 #define SIDE 9 /* cells of the block along each axis, from cell 4 */
@@ -79,6 +81,29 @@ int main(void) {
   for (d = 0; d < 3; d++)
     UNIT_NEAR(out[0].omega[d], f * w[d], 1e-12, "rigid spin: omega component");
   for (d = 0; d < DIM; d++) UNIT_NEAR(out[0].x[d], 8.5, 1e-12, "centroid");
+  {
+    /* hot spots: the particles with x_0 < 6 and those with x_0 > 7 hot,
+    ** a gap of two spacings between: two sets, each's volume the sum of
+    ** its particles' (F = 1: V0), slabs 2 and 6 cells thick */
+    hotspots hs = {0};
+    double *T, big = 0, small = 0, tot = 0;
+    size_t i;
+    UNIT_CHECK(thermal_enable(&s) == 0, "temperature field");
+    T = particles_comp(&s.ps, s.ftemp, 0);
+    for (i = 0; i < s.ps.n; i++) {
+      T[i] = s.ps.x[0][i] < 6 || s.ps.x[0][i] > 7 ? 10 : 0;
+      if (s.ps.body[i] == 0 && s.ps.x[0][i] < 6) small += s.ps.vol0[i];
+      if (s.ps.body[i] == 0 && s.ps.x[0][i] > 7) big += s.ps.vol0[i];
+      tot += s.ps.vol0[i];
+    }
+    UNIT_CHECK(diag_hotspots(&s, 5, HOTSPOT_LINK, &hs) == 0, "hotspots run");
+    UNIT_NEAR((double)hs.n, 2, 0, "hot spots: two slabs");
+    /* b's particle at the centre is hot, inside the larger slab */
+    UNIT_NEAR(hs.r[0].area, big + pow(0.5, DIM), 1e-12, "hot spot: the larger slab's volume");
+    UNIT_NEAR(hs.r[1].area, small, 1e-12, "hot spot: the smaller slab's volume");
+    UNIT_NEAR(hs.area_all, tot, 1e-12, "hot spots: all particles' volume");
+    hotspots_free(&hs);
+  }
   sim_free(&s);
   UNIT_END("test_diag_dim");
 }

@@ -40,5 +40,5 @@ int main(void) {
     for (d = 0; d < DIM; d++) dist2 += (a[d] - along * b[d]) * (a[d] - along * b[d]);
     UNIT_NEAR(vec_crossnorm(a, b), sqrt(dist2), 1e-14, "distance from a line");
   }
-  UNIT_END("dimvec");
+  UNIT_END("test_dimvec");
 }

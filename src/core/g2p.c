@@ -77,7 +77,7 @@ double g2p_affine_energy(const sim *s) {
 
 /* the sums of one chunk of particles (par.h), kept in s->red */
 typedef struct sums {
-  double ke, mom[DIM], am[NANG], v2max, pe, loss;
+  double ke, mom[DIM], am[3], v2max, pe, loss;
   size_t out;
 } sums;
 _Static_assert(sizeof(sums) <= SIM_RED_BYTES, "sums fit SIM_RED_BYTES");
@@ -130,7 +130,11 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
   ps->cell[i] = cell;
   u->ke += 0.5 * m * v2;
   if (v2 > u->v2max) u->v2max = v2;
-  vec_moment(u->am, m, xs, vs);
+  {
+    double x[DIM], v[DIM];
+    for (d = 0; d < DIM; d++) { x[d] = ps->x[d][i]; v[d] = ps->v[d][i]; }
+    vec_moment(u->am, m, x, v);
+  }
 }
 
 /* what a g2p pass does besides the gather: move the particles (USL),
@@ -407,7 +411,7 @@ static void finish(sim *s) {
   for (c = 0; c < nc; c++) {
     u.ke += red[c].ke;
     for (d = 0; d < DIM; d++) u.mom[d] += red[c].mom[d];
-    for (d = 0; d < NANG; d++) u.am[d] += red[c].am[d];
+    for (d = 0; d < 3; d++) u.am[d] += red[c].am[d];
     u.pe += red[c].pe;
     u.out += red[c].out;
     u.loss += red[c].loss;
@@ -416,7 +420,7 @@ static void finish(sim *s) {
   s->e.kinetic = u.ke;
   s->e.potential = u.pe;
   for (d = 0; d < DIM; d++) s->e.mom[d] = u.mom[d];
-  s->e.angmom = u.am[0];
+  for (d = 0; d < 3; d++) s->e.angmom[d] = u.am[d];
   s->vmax = sqrt(u.v2max);
   s->nout = u.out;
   s->e.transfer += u.loss;

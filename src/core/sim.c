@@ -309,10 +309,10 @@ void sim_measure(sim *s) {
   const particles *ps = &s->ps;
   size_t i;
   int d;
-  double ke = 0, se = 0, am[NANG] = {0}, v2max = 0, pe = 0;
+  double ke = 0, se = 0, am[3] = {0, 0, 0}, v2max = 0, pe = 0;
   for (d = 0; d < DIM; d++) s->e.mom[d] = 0;
   for (i = 0; i < ps->n; i++) {
-    double v2 = 0, x[DIM], v[DIM];
+    double v2 = 0;
     int32_t mi = s->bmat[ps->body[i]];
     for (d = 0; d < DIM; d++) {
       v2 += ps->v[d][i] * ps->v[d][i];
@@ -322,13 +322,16 @@ void sim_measure(sim *s) {
     if (v2 > v2max) v2max = v2;
     ke += 0.5 * ps->m[i] * v2;
     if (mi >= 0) se += s->mats[mi].model->energy(&s->mats[mi], ps, i);
-    for (d = 0; d < DIM; d++) { x[d] = ps->x[d][i]; v[d] = ps->v[d][i]; }
-    vec_moment(am, ps->m[i], x, v);
+    {
+      double x[DIM], v[DIM];
+      for (d = 0; d < DIM; d++) { x[d] = ps->x[d][i]; v[d] = ps->v[d][i]; }
+      vec_moment(am, ps->m[i], x, v);
+    }
   }
   s->e.kinetic = ke + g2p_affine_energy(s);
   s->e.strain = se;
   s->e.potential = pe;
-  s->e.angmom = am[0];
+  for (d = 0; d < 3; d++) s->e.angmom[d] = am[d];
   s->vmax = sqrt(v2max);
 }
 

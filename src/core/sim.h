@@ -18,6 +18,7 @@
 #include "material.h"
 #include "particles.h"
 #include "par.h"
+#include "vec.h"
 
 enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
 /* the velocity gradient the stresses are updated with: the updated grid
@@ -112,7 +113,8 @@ typedef struct sim_energy {
   double initial;    /* kinetic + strain + potential before the first step */
   double potential0; /* potential before the first step */
   double mom[DIM];
-  double angmom;     /* about the origin (2-D: z component) */
+  double angmom[3];  /* about the origin, sum m x × v (2-D: only the z
+                     ** component, angmom[2]; the others stay 0) */
   double jmin, jmax;
   size_t nbadj;
 } sim_energy;

@@ -571,9 +571,9 @@ static int bdiag_(lua_State *L) {
   setnum(L, "y", o.x[1]);
   setnum(L, "vx", o.v[0]);
   setnum(L, "vy", o.v[1]);
-  setnum(L, "omega", o.omega);
-  setnum(L, "angmom", o.angmom);
-  setnum(L, "inertia", o.inertia);
+  setnum(L, "omega", o.omega[2]);
+  setnum(L, "angmom", o.angmom[2]);
+  setnum(L, "inertia", o.inertia[2][2]);
   setnum(L, "kinetic", o.kinetic);
   setnum(L, "strain", o.strain);
   lua_pushinteger(L, (lua_Integer)o.n);
@@ -586,7 +586,7 @@ static int bvec(lua_State *L, int which) {
   bdiag o;
   int d;
   diag_of(L, lb, &o);
-  if (which == 2) { lua_pushnumber(L, o.omega); return 1; }
+  if (which == 2) { lua_pushnumber(L, o.omega[2]); return 1; }
   if (which == 3) { lua_pushnumber(L, o.mass); return 1; }
   for (d = 0; d < DIM; d++) lua_pushnumber(L, which ? o.v[d] : o.x[d]);
   return DIM;

@@ -702,7 +702,7 @@ static int lenergy(lua_State *L) {
   setnum(L, "bonded_area", s->bond_area);
   setnum(L, "px", s->e.mom[0]);
   setnum(L, "py", s->e.mom[1]);
-  setnum(L, "angmom", s->e.angmom);
+  setnum(L, "angmom", s->e.angmom[2]);
   setnum(L, "jmin", s->e.jmin);
   setnum(L, "jmax", s->e.jmax);
   if (s->heat) { /* heat.h */

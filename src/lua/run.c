@@ -143,7 +143,7 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[6] = s->e.plastic; v[7] = s->e.viscous;
   v[8] = s->e.boundary; v[9] = s->e.thermal; v[10] = tot;
   v[11] = sim_residual(s);
-  v[12] = s->e.mom[0]; v[13] = s->e.mom[1]; v[14] = s->e.angmom;
+  v[12] = s->e.mom[0]; v[13] = s->e.mom[1]; v[14] = s->e.angmom[2];
   v[15] = s->e.jmin; v[16] = s->e.jmax; v[17] = (double)s->ps.n;
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
   v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;

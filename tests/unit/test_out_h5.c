@@ -384,8 +384,14 @@ static void series(const char *dir) {
                         : "Dimensions=\"1000 3\">particles_000000.h5:/position<",
          1);
   xmfhas(path, "AttributeType=\"Vector\"", 2); /* velocity, 2 steps */
-  /* tensors as one Matrix each (stress, F), every reader sees them */
+  /* the stress as one Matrix, every reader sees it; F too in 2-D, and
+  ** in 3-D, a full 3 x 3 tensor, as XDMF's Tensor */
   xmfhas(path, "<Attribute Name=\"stress\" AttributeType=\"Matrix\"", 2);
+  xmfhas(path, DIM == 2 ? "<Attribute Name=\"F\" AttributeType=\"Matrix\""
+                        : "<Attribute Name=\"F\" AttributeType=\"Tensor\"", 2);
+  xmfhas(path, DIM == 2 ? "GeometryType=\"XY\"" : "GeometryType=\"XYZ\"", 3);
+  xmfhas(path, DIM == 2 ? "Dimensions=\"1 2\">0 0<" : "Dimensions=\"1 3\">0 0 0<",
+         1);
   xmfhas(path, "ItemType=\"HyperSlab\"", 0);
   /* the connectivity the Xdmf3 readers need, in each non-empty step */
   xmfhas(path, ":/xdmf/vertex</DataItem>", 2);

@@ -801,7 +801,7 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
     snprintf(err, errlen, "out of memory for %zu particles", ps->n);
     return -1;
   }
-  L.drawn = (int)nd;
+  L.drawn = (size_t)nd;
   p_clip(P, L.dx0, L.dy0, L.dx1, L.dy1);
   for (k = 0; k < nd; k++) {
     uint32_t col;

@@ -118,7 +118,7 @@ typedef struct render_layout {
   int cmap;                  /* colormap used (scalars) */
   int matrix;                /* body drawn as the matrix, or -1 */
   double bar;                /* the scale bar's length in the axes' unit */
-  int drawn;                 /* particles drawn (3-D: in the slice) */
+  size_t drawn;              /* particles drawn (3-D: in the slice) */
   double at;                 /* 3-D slice: its place along the axis */
 } render_layout;
 

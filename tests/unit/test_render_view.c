@@ -112,7 +112,7 @@ static void test_plane(void) {
   lattice(&ps, -1);
   o.project = 1;  /* no meaning in 2-D */
   if (draw(&c, &L, &ps, &o, "2-D") == 0) {
-    UNIT_CHECK(L.drawn == K * K, "2-D: all %d drawn (got %d)", K * K, L.drawn);
+    UNIT_CHECK(L.drawn == K * K, "2-D: all %d drawn (got %zu)", K * K, L.drawn);
     for (j = 0; j < K; j++) {
       i[DIM - 1] = j;
       UNIT_CHECK(px(&c, &L, &o, 0.5 * H, (j + 0.5) * H) ==
@@ -136,19 +136,19 @@ static void test_slices(void) {
   o.at = 0.49;  /* in layer 1 (0.25, 0.5) only */
   if (draw(&c, &L, &ps, &o, "slice") == 0) {
     UNIT_CHECK(L.drawn == K * K && L.at == 0.49,
-               "slice z = 0.49: one layer, %d particles (got %d)", K * K, L.drawn);
+               "slice z = 0.49: one layer, %d particles (got %zu)", K * K, L.drawn);
     UNIT_CHECK(px(&c, &L, &o, 0.6, 0.3) == render_body_color(1, L.matrix),
                "slice z = 0.49 shows layer 1");
   }
   canvas_free(&c);
   o.at = 1.2;  /* beyond the particles */
   if (draw(&c, &L, &ps, &o, "empty slice") == 0)
-    UNIT_CHECK(L.drawn == 0, "slice z = 1.2: none (got %d)", L.drawn);
+    UNIT_CHECK(L.drawn == 0, "slice z = 1.2: none (got %zu)", L.drawn);
   canvas_free(&c);
   o.at = 0.5;
   o.thick = 0.6;  /* layers 1 and 2, centres 0.125 away; 0 and 3 are 0.375 */
   if (draw(&c, &L, &ps, &o, "slab") == 0) {
-    UNIT_CHECK(L.drawn == 2 * K * K, "slab 0.6 at 0.5: two layers (got %d)",
+    UNIT_CHECK(L.drawn == 2 * K * K, "slab 0.6 at 0.5: two layers (got %zu)",
                L.drawn);
     UNIT_CHECK(px(&c, &L, &o, 0.6, 0.3) == render_body_color(2, L.matrix),
                "slab seen from +z: layer 2, the nearer, on top");
@@ -189,7 +189,7 @@ static void test_projections(void) {
     o.range[1] = K - 1;
     want = cmap_color(CMAP_SEQ, (double)nearest[a] / (K - 1));
     if (draw(&c, &L, &ps, &o, name[a]) == 0) {
-      UNIT_CHECK(L.drawn == K * K * K, "along %s: all %d drawn (got %d)",
+      UNIT_CHECK(L.drawn == K * K * K, "along %s: all %d drawn (got %zu)",
                  name[a], K * K * K, L.drawn);
       UNIT_CHECK(px(&c, &L, &o, 0.3, 0.6) == want && px(&c, &L, &o, 0.9, 0.1) == want,
                  "along %s: the nearest layer (index %d) on top", name[a],

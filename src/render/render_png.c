@@ -434,6 +434,14 @@ int render_view_axes(const char *axis, int *h, int *u, int *a, char *err,
   return 0;
 }
 
+/* det F of particle i */
+static double det_at(const particles *ps, size_t i) {
+  double T[NTENS];
+  int c;
+  for (c = 0; c < NTENS; c++) T[c] = ps->F[c][i];
+  return vec_det(T);
+}
+
 /* half the side of particle i's cube (square in 2-D) */
 static double halfside(const particles *ps, size_t i) {
   double v = ps->vol0[i] > 0 ? ps->vol0[i] : 0;
@@ -482,6 +490,17 @@ static int cmpdeep(const void *x, const void *y) {
   return (a->i > b->i) - (a->i < b->i);
 }
 
+/* how far particle i's cube, mapped by F, reaches along axis a from its
+** centre: half its side times the sum of |F_ab| over b (the initial half
+** side when F is broken) */
+static double reach(const particles *ps, size_t i, int a) {
+  double r = 0;
+  int b;
+  for (b = 0; b < DIM; b++) r += fabs(ps->F[a * DIM + b][i]);
+  if (!isfinite(r) || !(det_at(ps, i) > 0)) r = 1;
+  return halfside(ps, i) * r;
+}
+
 /* the slice's place: as given, else the middle of the particles */
 static double slice_at(const particles *ps, const render_opts *o, int a) {
   double lo = HUGE_VAL, hi = -HUGE_VAL;
@@ -507,7 +526,7 @@ static long depth_order(const particles *ps, const render_opts *o,
   if (!d) return -1;
   for (i = 0; i < ps->n; i++) {
     double z = ps->x[w->a][i];
-    double half = o->thick > 0 ? o->thick / 2 : halfside(ps, i);
+    double half = o->thick > 0 ? o->thick / 2 : reach(ps, i, w->a);
     if (!isfinite(z)) continue;
     if (!o->project && !(fabs(z - at) < half)) continue;
     d[n].z = w->toward * z;

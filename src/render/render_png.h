@@ -48,10 +48,12 @@
 ** the right and y up, seen from +z; along x, z right and y up, seen from
 ** -x; along y, x right and z up, seen from -y.  lo and hi are then the
 ** window in those two axes (render_view_axes names them).  A slice
-** (project 0) draws the particles whose cube (side cbrt(volume0))
-** crosses the plane at `at` along the axis, or with thick > 0 those
-** within thick / 2 of it; `at` is, unless given, the middle of the
-** particles' extent along the axis.  A projection (project 1) draws them
+** (project 0) draws the particles whose cube (side cbrt(volume0),
+** mapped by F) crosses the plane at `at` along the axis, or with
+** thick > 0 those whose centre is within thick / 2 of it; `at` is,
+** unless given, the middle of the particles' extent along the axis.
+** The colour range is taken from all the particles, so that slices of
+** one store share it.  A projection (project 1) draws them
 ** all.  Either way the farthest are drawn first, so the nearest are on
 ** top, and each is the face of its cube across the axis mapped by the
 ** block of F in the picture's plane.  sdiff in 3-D is the largest

@@ -141,6 +141,18 @@ static void test_slices(void) {
                "slice z = 0.49 shows layer 1");
   }
   canvas_free(&c);
+  {
+    /* layer 0 stretched 3 times along z reaches 0.375 from z = 0.125 */
+    size_t p;
+    for (p = 0; p < ps.n; p++)
+      if (ps.body[p] == 0) ps.F[8][p] = 3;
+    o.at = 0.45;
+    if (draw(&c, &L, &ps, &o, "stretched") == 0)
+      UNIT_CHECK(L.drawn == 2 * K * K, "slice z = 0.45 meets layer 1 and the "
+                 "stretched layer 0 (got %zu)", L.drawn);
+    canvas_free(&c);
+    for (p = 0; p < ps.n; p++) ps.F[8][p] = 1;
+  }
   o.at = 1.2;  /* beyond the particles */
   if (draw(&c, &L, &ps, &o, "empty slice") == 0)
     UNIT_CHECK(L.drawn == 0, "slice z = 1.2: none (got %zu)", L.drawn);

@@ -108,7 +108,7 @@ SRC     = $(wildcard $(LAYERS:%=src/%/*.c))
 # the compiler's dependency files.  The application layer is built once,
 # for 2-D: it reaches 3-D through the Lua layer (mvmpm.sim{dim = 3}).
 DIMFREE = core/hash core/par core/shape io/h5sum io/ofile io/out_csv \
-          lua/interrupt lua/lcheck lua/lstate lua/version render/axis \
+          lua/interrupt lua/lstate lua/version render/axis \
           render/canvas render/cmap render/font render/plot_png render/png \
           render/svg
 # the names each dimension's code calls in the other (lmvmpm.h)

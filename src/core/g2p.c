@@ -103,7 +103,7 @@ STENCIL_INLINE void box_init(box *bx, const grid *g, const double *grav) {
 
 /* after the move: wrap, domain check, cell, sums */
 STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
-  double m = ps->m[i], v2 = 0, xs[DIM], vs[DIM];
+  double m = ps->m[i], v2 = 0;
   int32_t cell = 0, stride = 1;
   int d;
   for (d = 0; d < DIM; d++) {
@@ -120,8 +120,6 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
     if (!(x >= bx->lo[d] && x < bx->hi[d] && r < bx->cells[d])) cell = -1;
     else if (cell >= 0) cell += stride * (int32_t)r;
     stride *= bx->cells[d];
-    xs[d] = x;
-    vs[d] = ps->v[d][i];
     v2 += ps->v[d][i] * ps->v[d][i];
     u->mom[d] += m * ps->v[d][i];
     u->pe -= m * bx->grav[d] * x;

@@ -5,6 +5,7 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include "dim.h"
 #include "lcheck.h"
 
 /* edits between a and b: insertions, deletions, substitutions and swaps
@@ -273,8 +274,14 @@ void chk_vec(lua_State *L, int idx, const char *what, const char *key,
     if (required) luaL_error(L, "%s: field '%s' is required", what, key);
     return;
   }
-  if (!lua_istable(L, -1) || luaL_len(L, -1) != n)
-    luaL_error(L, "%s: field '%s' must be a list of %d numbers", what, key, n);
+  if (!lua_istable(L, -1))
+    luaL_error(L, "%s: field '%s' must be a list of %d numbers (got %s)", what,
+               key, n, luaL_typename(L, -1));
+  if (luaL_len(L, -1) != n)
+    luaL_error(L, "%s: field '%s' must be a list of %d numbers (got %d)%s",
+               what, key, n, (int)luaL_len(L, -1),
+               n == DIM ? (DIM == 2 ? "; this build simulates 2-D"
+                                    : "; this build simulates 3-D") : "");
   for (k = 0; k < n; k++) {
     int isnum;
     lua_geti(L, -1, k + 1);
@@ -285,6 +292,14 @@ void chk_vec(lua_State *L, int idx, const char *what, const char *key,
     lua_pop(L, 1);
   }
   lua_pop(L, 1);
+}
+
+const char *chk_pt(char *buf, const double *x) {
+  int d, n = 0;
+  for (d = 0; d < DIM; d++)
+    n += snprintf(buf + n, (size_t)(CHK_PTLEN - n), "%s%g", d ? ", " : "(", x[d]);
+  snprintf(buf + n, (size_t)(CHK_PTLEN - n), ")");
+  return buf;
 }
 
 /* luaL_error with the C library's formats (lua_pushfstring knows no %g):

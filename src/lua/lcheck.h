@@ -29,6 +29,10 @@ int chk_bool(lua_State *L, int idx, const char *what, const char *key,
 /* vector field {x, y}: fills v (defaults kept if absent) */
 void chk_vec(lua_State *L, int idx, const char *what, const char *key,
              double *v, int n, int required);
+/* a point of DIM coordinates as "(x, y)" or "(x, y, z)" for messages,
+** written into buf (CHK_PTLEN chars), which it returns */
+#define CHK_PTLEN 80
+const char *chk_pt(char *buf, const double *x);
 /* a number argument of an API function (arg, named name for messages):
 ** finite and in [lo, hi] as chk_num's flags say; CHK_REQUIRED unset, def
 ** when absent.  "what: argument 'name' must be finite (got nan)" */

@@ -90,7 +90,16 @@ typedef struct lbody {
 #define LSIM_MAX_SPAN 1e15    /* steps across t_end, where a value enters */
 #define LSIM_MAX_EVENTS 1e9   /* outputs, checkpoints, calls of a callback */
 
+/* a rotation quantity (angular momentum, spin) as its components: a
+** scalar (2-D, the z component) is one, a vector in 3-D three */
+#define LSIM_NCOMP(q) ((int)(sizeof(q) / sizeof(double)))
+#define LSIM_COMP(q) ((const double *)&(q))
+
 /* lua_sim.c */
+/* push a rotation quantity of n components: in 2-D the number (its z
+** component, the last), in 3-D a table {x, y, z} (as_table) or the n
+** numbers; returns how many values it pushed */
+int lsim_push_rot(lua_State *L, const double *q, int n, int as_table);
 extern const char *const lsim_side_names[];  /* "left", "right", ... */
 /* refuse a velocity v (DIM components) that the step cannot follow: its
 ** CFL step would need more than LSIM_MAX_SPAN steps to t_end.  fnidx: the
@@ -110,6 +119,9 @@ void lsim_hold(lua_State *L, lsim *ls);
 /* every engine metatable: getmetatable gives this, not the table */
 void lsim_lock(lua_State *L, int mtidx);
 int lsim_new(lua_State *L);
+/* sim{dim = N} at idx: N (absent: DIM) must be this build's DIM, else a
+** Lua error naming the build's dimension; returns DIM */
+int lsim_dim_check(lua_State *L, int idx);
 int lsim_env_threads(void);                  /* $MVMPM_THREADS or 1 */                 /* mvmpm.sim{...} */
 void lsim_open(lua_State *L);
 void lsim_uv(lua_State *L, int idx, const char *field); /* push uv.field */
@@ -123,11 +135,17 @@ lbody *lbody_check(lua_State *L, int idx, const lsim *ls, const char *what);
 /* lua_material.c */
 void lmat_open(lua_State *L, int modidx);
 material *lmat_check(lua_State *L, int idx);
-/* lua_shape.c: regions bodies are seeded from */
-enum { SH_DISK, SH_ANNULUS, SH_RECT, SH_POLYGON, SH_REST, SH_FUNC };
+/* lua_shape.c: regions bodies are seeded from.  disk is a ball in 3-D,
+** annulus a spherical shell, rect a box; cylinder runs from a base point
+** to an end point; extrude (3-D) is a polygon swept along an axis */
+enum { SH_DISK, SH_ANNULUS, SH_RECT, SH_POLYGON, SH_REST, SH_FUNC,
+       SH_CYLINDER, SH_EXTRUDE };
 typedef struct lshape {
   int kind;
-  double c[DIM], r, r0;      /* disk / annulus: centre, outer, inner radius */
+  double c[DIM], r, r0;      /* disk / annulus: centre, outer, inner radius;
+                             ** cylinder: base point, radius */
+  double ax[DIM], len;       /* cylinder: unit axis, length */
+  int axis, p0, p1;          /* extrude: the axis, the polygon's two axes */
   double lo[DIM], hi[DIM];   /* bounding box (rect: the rectangle) */
   int npts;                  /* polygon vertices, stored after the struct */
   double pts[];
@@ -136,7 +154,8 @@ void lshape_open(lua_State *L, int modidx);
 lshape *lshape_check(lua_State *L, int idx);
 /* is (x) inside the shape at idx?  SH_FUNC calls the Lua function */
 int lshape_inside(lua_State *L, int idx, const lshape *sh, const double *x);
-double lshape_area(const lshape *sh);   /* < 0 if not known */
+/* the shape's area (2-D) or volume (3-D); < 0 if not known */
+double lshape_area(const lshape *sh);
 /* lua_thermal.c: sim:temperature(T | function(t)) */
 int lsim_temperature(lua_State *L);
 /* lua_hotspot.c: sim:hotspots{...}; the options table {threshold, link};

@@ -136,7 +136,7 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
                        int bodyid, seed *sd, size_t **taken, size_t *ntaken) {
   const grid *g = &ls->s.g;
   lshape *sh = lshape_check(L, shidx);
-  int ppc = ls->s.ppc, N[DIM], i0[DIM], i1[DIM], d;
+  int ppc = ls->s.ppc, N[DIM], i0[DIM], i1[DIM], ix[DIM], iw[DIM], d;
   double hp = g->h / ppc, vol = pow(hp, DIM), x[DIM];
   size_t cap = 0;
   /* along a periodic dimension the shape's lattice range is not clipped
@@ -164,31 +164,37 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
       i1[d] = b > N[d] ? N[d] : b < 0 ? 0 : (int)b;
     }
   }
-#if DIM == 2
-  {
-    int i, j;
-    for (j = i0[1]; j < i1[1]; j++) {
-      /* a large lattice takes a while: Ctrl-C is heard per row */
-      if (interrupt_pending()) {
-        interrupt_clear();
-        luaL_error(L, "interrupted while seeding body '%s'", lua_tostring(L, -1));
+  /* an odometer over the lattice range, x fastest, then y (then z): the
+  ** order, and so the particle numbers, of the 2-D double loop */
+  for (d = 0; d < DIM; d++)
+    if (i1[d] <= i0[d]) return;
+  for (d = 0; d < DIM; d++) ix[d] = i0[d];
+  for (;;) {
+    size_t k = 0, stride = 1;
+    int in;
+    /* a large lattice takes a while: Ctrl-C is heard per row */
+    if (ix[0] == i0[0] && interrupt_pending()) {
+      interrupt_clear();
+      luaL_error(L, "interrupted while seeding body '%s'", lua_tostring(L, -1));
+    }
+    /* the shape is tested where it is; the particle goes to the image */
+    for (d = 0; d < DIM; d++) {
+      iw[d] = ((ix[d] % N[d]) + N[d]) % N[d];
+      k += (size_t)iw[d] * stride;
+      stride *= (size_t)N[d];
+      x[d] = g->lo[d] + (ix[d] + 0.5) * hp;
+    }
+    in = lshape_inside(L, shidx, sh, x);
+    if (in) {
+      for (d = 0; d < DIM; d++) x[d] = g->lo[d] + (iw[d] + 0.5) * hp;
+      if (ls->occ[k] >= 0 && !skip_taken) {
+        char pt[CHK_PTLEN];
+        chk_error(L, "body '%s' overlaps body '%s' at %s; move it, or "
+                     "give overlap = \"skip\" to seed only the free points",
+                  lua_tostring(L, -1), ls->s.bodies[ls->occ[k]].name,
+                  chk_pt(pt, x));
       }
-      for (i = i0[0]; i < i1[0]; i++) {
-        int iw = ((i % N[0]) + N[0]) % N[0], jw = ((j % N[1]) + N[1]) % N[1];
-        size_t k = (size_t)iw + (size_t)N[0] * jw;
-        /* the shape is tested where it is; the particle goes to the image */
-        x[0] = g->lo[0] + (i + 0.5) * hp;
-        x[1] = g->lo[1] + (j + 0.5) * hp;
-        if (!lshape_inside(L, shidx, sh, x)) continue;
-        x[0] = g->lo[0] + (iw + 0.5) * hp;
-        x[1] = g->lo[1] + (jw + 0.5) * hp;
-        if (ls->occ[k] >= 0) {
-          if (skip_taken) continue;
-          chk_error(L, "body '%s' overlaps body '%s' at (%g, %g); move it, or "
-                        "give overlap = \"skip\" to seed only the free points",
-                     lua_tostring(L, -1), ls->s.bodies[ls->occ[k]].name, x[0],
-                     x[1]);
-        }
+      if (ls->occ[k] < 0) {
         if (*ntaken == cap) {
           size_t *p;
           cap = cap ? 2 * cap : 256;
@@ -200,8 +206,9 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
         seed_push(L, sd, x, vol);
       }
     }
+    for (d = 0; d < DIM && ++ix[d] == i1[d]; d++) ix[d] = i0[d];
+    if (d == DIM) break;
   }
-#endif
   (void)bodyid;
 }
 
@@ -244,9 +251,12 @@ static void seed_points(lua_State *L, lsim *ls, seed *sd) {
       chk_error(L, "body: point %d has volume %g; volumes must be finite and > 0", (int)k,
                  vol);
     for (d = 0; d < DIM; d++)
-      if (x[d] < ls->s.g.lo[d] || x[d] >= ls->s.g.hi[d])
-        chk_error(L, "body: point %d (%g, %g) lies outside the domain", (int)k,
-                   x[0], x[1]);
+      if (x[d] < ls->s.g.lo[d] || x[d] >= ls->s.g.hi[d]) {
+        char pt[CHK_PTLEN];
+        chk_error(L, "body: point %d %s lies outside the domain (%s from %g "
+                     "to %g)", (int)k, chk_pt(pt, x), names[d],
+                  ls->s.g.lo[d], ls->s.g.hi[d]);
+      }
     seed_push(L, sd, x, vol);
   }
   lua_pop(L, DIM + 1);
@@ -332,6 +342,19 @@ static double near(const sim *s, int d, double r) {
   return r;
 }
 
+/* angular_velocity: in 2-D a number (the spin about z), in 3-D the
+** vector {wx, wy, wz}; w3 gets it as a 3-vector (2-D: its z slot) */
+#define NROT (DIM * (DIM - 1) / 2)
+static void body_omega(lua_State *L, double *w3) {
+  double w[NROT] = {0};
+  int d;
+  if (NROT == 1)
+    w[0] = chk_num(L, 2, "body", "angular_velocity", 0, -HUGE_VAL, HUGE_VAL, 0);
+  else
+    chk_vec(L, 2, "body", "angular_velocity", w, NROT, 0);
+  for (d = 0; d < NROT; d++) w3[3 - NROT + d] = w[d];
+}
+
 int lbody_new(lua_State *L) {
   static const char *const keys[] = {"name", "shape", "points", "material",
       "velocity", "angular_velocity", "field", "driven", "volume", "overlap",
@@ -342,9 +365,9 @@ int lbody_new(lua_State *L) {
   sim *s = &ls->s;
   seedbox *bx;
   size_t k;
-  double v0[DIM] = {0}, omega, c[DIM] = {0}, scale = 1, bond, T0, Th;
+  double v0[DIM] = {0}, w3[3] = {0}, c[DIM] = {0}, scale = 1, bond, T0, Th;
   size_t first;
-  int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0, tfun;
+  int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0, tfun, spin;
   double blo[DIM], bhi[DIM];
   int32_t field;
   char name[32];
@@ -370,7 +393,7 @@ int lbody_new(lua_State *L) {
   vfun = lua_isfunction(L, -1);
   lua_pop(L, 1);
   if (!vfun) chk_vec(L, 2, "body", "velocity", v0, DIM, 0);
-  omega = chk_num(L, 2, "body", "angular_velocity", 0, -HUGE_VAL, HUGE_VAL, 0);
+  body_omega(L, w3);
   lua_getfield(L, 2, "temperature");
   tfun = lua_isfunction(L, -1);
   lua_pop(L, 1);
@@ -403,8 +426,10 @@ int lbody_new(lua_State *L) {
     lshape *sh;
     lua_pop(L, 1);
     if (!luaL_testudata(L, -1, LSHAPE_MT))
-      luaL_error(L, "body '%s': field 'shape' must be a shape (mvmpm.disk, "
-                    "rect, polygon, annulus, region or rest)", name);
+      luaL_error(L, "body '%s': field 'shape' must be a shape (mvmpm.%s, "
+                    "cylinder, region or rest)", name,
+                 DIM == 2 ? "disk, rect, polygon, annulus"
+                          : "ball, box, extrude, shell");
     sh = lshape_check(L, -1);
     isrest = sh->kind == SH_REST;
     for (d = 0; d < DIM; d++) {
@@ -419,8 +444,8 @@ int lbody_new(lua_State *L) {
     if (exact) {
       double a = lshape_area(sh);
       if (a < 0)
-        luaL_error(L, "body '%s': volume = \"exact\" needs a shape of known area",
-                   name);
+        luaL_error(L, "body '%s': volume = \"exact\" needs a shape of known %s",
+                   name, DIM == 2 ? "area" : "volume");
       if (bx->sd.n) scale = a / (bx->sd.n * bx->sd.vol[0]);
     }
     lua_pop(L, 2);
@@ -429,10 +454,18 @@ int lbody_new(lua_State *L) {
     lua_pop(L, 3);
   }
   if (bx->sd.n == 0) {
-    if (outside)
-      chk_error(L, "body '%s': its shape (x %g .. %g, y %g .. %g) lies outside "
-                   "the domain (x %g .. %g, y %g .. %g)", name, blo[0], bhi[0],
-                blo[1], bhi[1], s->g.lo[0], s->g.hi[0], s->g.lo[1], s->g.hi[1]);
+    if (outside) {
+      char sb[160], db[160];
+      int nb = 0, nd = 0;
+      for (d = 0; d < DIM; d++) {
+        nb += snprintf(sb + nb, sizeof sb - nb, "%s%c %g .. %g", d ? ", " : "",
+                       "xyz"[d], blo[d], bhi[d]);
+        nd += snprintf(db + nd, sizeof db - nd, "%s%c %g .. %g", d ? ", " : "",
+                       "xyz"[d], s->g.lo[d], s->g.hi[d]);
+      }
+      chk_error(L, "body '%s': its shape (%s) lies outside the domain (%s)",
+                name, sb, db);
+    }
     luaL_error(L, "body '%s': no particle falls inside its shape (is it at least "
                   "one seeding point, a cell / ppc, across?)", name);
   }
@@ -450,34 +483,45 @@ int lbody_new(lua_State *L) {
   for (d = 0; d < DIM; d++) c[d] += bx->sd.x[d];
   first = s->ps.n;
   if (vfun) lua_getfield(L, 2, "velocity"); /* stays while seeding */
+  spin = w3[0] != 0 || w3[1] != 0 || w3[2] != 0;
   for (k = 0; k < bx->sd.n; k++) {
-    double *x = &bx->sd.x[DIM * k], v[DIM];
+    double *x = &bx->sd.x[DIM * k], v[DIM], r[3] = {0};
+    char pt[CHK_PTLEN];
     for (d = 0; d < DIM; d++) v[d] = v0[d];
-    v[0] -= omega * near(s, 1, x[1] - c[1]);
-    v[1] += omega * near(s, 0, x[0] - c[0]);
-    if (vfun) { /* velocity = function(x, y) return vx, vy end */
+    /* the rigid spin w x r; in 2-D w has its z component only, and
+    ** w x r is (-w r_y, w r_x) */
+    for (d = 0; d < DIM; d++) r[d] = near(s, d, x[d] - c[d]);
+    for (d = 0; d < DIM; d++)
+      v[d] += w3[(d + 1) % 3] * r[(d + 2) % 3] - w3[(d + 2) % 3] * r[(d + 1) % 3];
+    chk_pt(pt, x);
+    if (vfun) { /* velocity = function(x, y[, z]) return vx, vy[, vz] end */
       int fn = lua_gettop(L);
       lua_pushvalue(L, fn);
       for (d = 0; d < DIM; d++) lua_pushnumber(L, x[d]);
       lua_call(L, DIM, DIM);
       for (d = 0; d < DIM; d++)
-        v[d] += chk_result(L, d - DIM, fn, "velocity of body '%s' at (%g, %g)",
-                           name, x[0], x[1]);
-      lsim_check_speed(L, ls, v, fn, "velocity of body '%s' at (%g, %g)",
-                       name, x[0], x[1]);
+        v[d] += chk_result(L, d - DIM, fn, "velocity of body '%s' at %s",
+                           name, pt);
+      lsim_check_speed(L, ls, v, fn, "velocity of body '%s' at %s", name, pt);
       lua_pop(L, DIM);
     } else
-      lsim_check_speed(L, ls, v, 0, "body '%s': velocity at (%g, %g)", name,
-                       x[0], x[1]);
+      lsim_check_speed(L, ls, v, 0, "body '%s': velocity at %s", name, pt);
     if (sim_add_particle(s, b, x, v, bx->sd.vol[k] * scale) < 0) {
       luaL_error(L, "body: out of memory for particles");
     }
   }
   if (vfun) lua_pop(L, 1);
-  if (s->faff >= 0 && omega != 0) { /* APIC: the rigid spin is affine */
-    double *c01 = particles_comp(&s->ps, s->faff, 1);
-    double *c10 = particles_comp(&s->ps, s->faff, 2);
-    for (k = first; k < s->ps.n; k++) { c01[k] = -omega; c10[k] = omega; }
+  if (s->faff >= 0 && spin) { /* APIC: the rigid spin is affine, C = [w]x:
+    ** C_ab = -e_abc w_c (2-D: C_01 = -w, C_10 = w) */
+    int a, bb;
+    for (a = 0; a < DIM; a++)
+      for (bb = 0; bb < DIM; bb++) {
+        int cc = 3 - a - bb;
+        double sgn = (bb == (a + 1) % 3) ? -1 : 1, *C;
+        if (a == bb) continue;
+        C = particles_comp(&s->ps, s->faff, a * DIM + bb);
+        for (k = first; k < s->ps.n; k++) C[k] = sgn * w3[cc];
+      }
   }
   if (bond > 0) { /* strength of the body's bonds to its neighbours */
     double *bp;
@@ -511,8 +555,11 @@ int lbody_new(lua_State *L) {
       lua_pushvalue(L, fn);
       lua_insert(L, -DIM - 1);
       lua_call(L, DIM, 1);
-      T[k] = chk_result(L, -1, fn, "temperature of body '%s' at (%g, %g)",
-                        name, s->ps.x[0][k], s->ps.x[1][k]);
+      double xk[DIM];
+      char pt[CHK_PTLEN];
+      for (d = 0; d < DIM; d++) xk[d] = s->ps.x[d][k];
+      T[k] = chk_result(L, -1, fn, "temperature of body '%s' at %s", name,
+                        chk_pt(pt, xk));
       lua_pop(L, 1);
     }
     lua_pop(L, 1);
@@ -560,20 +607,38 @@ static void setnum(lua_State *L, const char *k, double v) {
   lua_setfield(L, -2, k);
 }
 
-/* b:diag() -> {mass, x, y, vx, vy, omega, angmom, inertia, kinetic, strain, n} */
+/* b:diag() -> {mass, x, y[, z], vx, vy[, vz], omega, angmom, inertia,
+** kinetic, strain, n} */
 static int bdiag_(lua_State *L) {
   lbody *lb = checkbody(L, 1);
   bdiag o;
+  int d;
   diag_of(L, lb, &o);
   lua_createtable(L, 0, 12);
   setnum(L, "mass", o.mass);
-  setnum(L, "x", o.x[0]);
-  setnum(L, "y", o.x[1]);
-  setnum(L, "vx", o.v[0]);
-  setnum(L, "vy", o.v[1]);
-  setnum(L, "omega", o.omega[2]);
-  setnum(L, "angmom", o.angmom[2]);
-  setnum(L, "inertia", o.inertia[2][2]);
+  for (d = 0; d < DIM; d++) {
+    static const char *const xs[] = {"x", "y", "z"}, *const vs[] = {"vx", "vy", "vz"};
+    setnum(L, xs[d], o.x[d]);
+    setnum(L, vs[d], o.v[d]);
+  }
+  lsim_push_rot(L, LSIM_COMP(o.omega), LSIM_NCOMP(o.omega), 1);
+  lua_setfield(L, -2, "omega");
+  lsim_push_rot(L, LSIM_COMP(o.angmom), LSIM_NCOMP(o.angmom), 1);
+  lua_setfield(L, -2, "angmom");
+  if (DIM == 2) setnum(L, "inertia", o.inertia[2][2]);
+  else { /* the inertia tensor about the centroid, row by row */
+    int a, b;
+    lua_createtable(L, 3, 0);
+    for (a = 0; a < 3; a++) {
+      lua_createtable(L, 3, 0);
+      for (b = 0; b < 3; b++) {
+        lua_pushnumber(L, o.inertia[a][b]);
+        lua_rawseti(L, -2, b + 1);
+      }
+      lua_rawseti(L, -2, a + 1);
+    }
+    lua_setfield(L, -2, "inertia");
+  }
   setnum(L, "kinetic", o.kinetic);
   setnum(L, "strain", o.strain);
   lua_pushinteger(L, (lua_Integer)o.n);
@@ -586,7 +651,7 @@ static int bvec(lua_State *L, int which) {
   bdiag o;
   int d;
   diag_of(L, lb, &o);
-  if (which == 2) { lua_pushnumber(L, o.omega[2]); return 1; }
+  if (which == 2) return lsim_push_rot(L, LSIM_COMP(o.omega), LSIM_NCOMP(o.omega), 0);
   if (which == 3) { lua_pushnumber(L, o.mass); return 1; }
   for (d = 0; d < DIM; d++) lua_pushnumber(L, which ? o.v[d] : o.x[d]);
   return DIM;

@@ -90,19 +90,23 @@ void lsim_hotspot_file(lua_State *L, lsim *ls, int k) {
     luaL_error(L, "%s", ls->s.err);
   snprintf(path, sizeof path, "%s/hotspots_%06d.csv", ls->outdir, k);
   sandbox_file(L, path, "output");
-  cap = 256 + 220 * (ls->hs.n + 1);
+  cap = 256 + 250 * (ls->hs.n + 1);
   if (!(buf = malloc(cap))) luaL_error(L, "output: out of memory");
   len += (size_t)snprintf(buf + len, cap - len,
       "# t = %.17g, step %ld, threshold %.17g, link %.17g spacings, "
       "hot area fraction %.17g\n"
-      "region,particles,area,mass,T_max,T_mean,x,y,reacted\n",
+      "region,particles,area,mass,T_max,T_mean,%s,reacted\n",
       ls->s.t, ls->s.step, ls->hs_threshold, ls->hs_link,
-      ls->hs.area_all > 0 ? ls->hs.area_hot / ls->hs.area_all : 0);
+      ls->hs.area_all > 0 ? ls->hs.area_hot / ls->hs.area_all : 0,
+      DIM == 2 ? "x,y" : "x,y,z");
   for (j = 0; j < ls->hs.n; j++) {
     const hotspot *h = &ls->hs.r[j];
-    len += (size_t)snprintf(buf + len, cap - len,
-        "%zu,%zu,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", j + 1, h->n,
-        h->area, h->mass, h->Tmax, h->Tmean, h->x[0], h->x[1], h->reacted);
+    int d;
+    len += (size_t)snprintf(buf + len, cap - len, "%zu,%zu,%.17g,%.17g,%.17g,%.17g",
+                            j + 1, h->n, h->area, h->mass, h->Tmax, h->Tmean);
+    for (d = 0; d < DIM; d++)
+      len += (size_t)snprintf(buf + len, cap - len, ",%.17g", h->x[d]);
+    len += (size_t)snprintf(buf + len, cap - len, ",%.17g\n", h->reacted);
   }
   if (ofile_put(path, buf, len, err, sizeof err)) {
     free(buf);

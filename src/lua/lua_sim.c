@@ -122,7 +122,8 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
   }
   if (!lua_istable(L, idx))
     luaL_error(L, "%s must be \"wall\", \"free\", \"periodic\" or a table "
-                  "{\"wall\", friction = mu, velocity = {vx, vy}}", what);
+                  "{\"wall\", friction = mu, velocity = {%s}}", what,
+               DIM == 2 ? "vx, vy" : "vx, vy, vz");
   chk_keys(L, idx, what, keys);
   lua_rawgeti(L, idx, 1);
   lua_setfield(L, idx, "kind");
@@ -156,8 +157,9 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
     if (kind != SIDE_WALL) luaL_error(L, "%s: only a wall can move", what);
     chk_vec(L, idx, what, "velocity", sd->v, DIM, 1);
     if (sd->v[k / 2] != 0)
-      chk_error(L, "%s: the wall slides along its own line: velocity's %c "
-                   "component must be 0 (got %g)", what, "xyz"[k / 2],
+      chk_error(L, "%s: the wall slides along its own %s: velocity's %c "
+                   "component must be 0 (got %g)", what,
+                DIM == 2 ? "line" : "plane", "xyz"[k / 2],
                 sd->v[k / 2]);
   }
   lua_pop(L, 1);
@@ -196,6 +198,32 @@ static void newuv(lua_State *L) {
   lua_setiuservalue(L, -2, 1);
 }
 
+int lsim_push_rot(lua_State *L, const double *q, int n, int as_table) {
+  int k;
+  if (DIM == 2 || n == 1) {
+    lua_pushnumber(L, q[n - 1]);
+    return 1;
+  }
+  if (as_table) lua_createtable(L, n, 0);
+  for (k = 0; k < n; k++) {
+    lua_pushnumber(L, q[k]);
+    if (as_table) lua_rawseti(L, -2, k + 1);
+  }
+  return as_table ? 1 : n;
+}
+
+/* sim{dim = N}: the dimension the scene is written for.  This build
+** simulates DIM-D only; absent, dim means DIM.  (One binary holding both
+** builds sends a scene to the build its dim names before this runs.) */
+int lsim_dim_check(lua_State *L, int idx) {
+  double dim = chk_num(L, idx, "sim", "dim", DIM, 2, 3, CHK_INT);
+  if (dim != DIM)
+    luaL_error(L, "sim: field 'dim' is %d, but this build simulates %d-D: run "
+                  "the scene with the %d-D build, or give dim = %d and %d "
+                  "coordinates everywhere", (int)dim, DIM, (int)dim, DIM, DIM);
+  return DIM;
+}
+
 /* the default thread count: $MVMPM_THREADS if it is a count, else 1 */
 int lsim_env_threads(void) {
   const char *e = getenv("MVMPM_THREADS");
@@ -210,7 +238,7 @@ int lsim_new(lua_State *L) {
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
       "wall_remap", "wall_contact", "normals", "normal_window", "contact_gap",
-      "xpic", "bond_release", "bond_traction", "bond_length", NULL};
+      "xpic", "bond_release", "bond_traction", "bond_length", "dim", NULL};
   static const char *const updates[] = {"usl", "musl", "usavg", NULL};
   static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
@@ -228,10 +256,12 @@ int lsim_new(lua_State *L) {
   sim *s;
   luaL_checktype(L, 1, LUA_TTABLE);
   chk_keys(L, 1, what, keys);
+  lsim_dim_check(L, 1);
   /* domain = {x = {0, 3}, y = {0, 3}} */
   lua_getfield(L, 1, "domain");
   if (!lua_istable(L, -1))
-    luaL_error(L, "sim: field 'domain' is required: {x = {xmin, xmax}, y = {ymin, ymax}}");
+    luaL_error(L, "sim: field 'domain' is required: {x = {xmin, xmax}, "
+                  "y = {ymin, ymax}%s}", DIM == 3 ? ", z = {zmin, zmax}" : "");
   {
     static const char *const dk[] = {"x", "y", "z", NULL};
     static const char *const dk2[] = {"x", "y", NULL};
@@ -675,8 +705,10 @@ static int lsettle(lua_State *L) {
 
 /* sim:energy() -> the budget and momenta */
 static int lenergy(lua_State *L) {
+  static const char *const pnames[] = {"px", "py", "pz"};
   lsim *ls = lsim_check(L, 1);
   sim *s = &ls->s;
+  int d;
   if (!s->started) sim_begin(s);
   lua_createtable(L, 0, 24);
   setnum(L, "kinetic", s->e.kinetic);
@@ -700,9 +732,9 @@ static int lenergy(lua_State *L) {
   lua_pushinteger(L, (lua_Integer)s->ncut_total);
   lua_setfield(L, -2, "debonded");
   setnum(L, "bonded_area", s->bond_area);
-  setnum(L, "px", s->e.mom[0]);
-  setnum(L, "py", s->e.mom[1]);
-  setnum(L, "angmom", s->e.angmom[2]);
+  for (d = 0; d < DIM; d++) setnum(L, pnames[d], s->e.mom[d]);
+  lsim_push_rot(L, LSIM_COMP(s->e.angmom), LSIM_NCOMP(s->e.angmom), 1);
+  lua_setfield(L, -2, "angmom");
   setnum(L, "jmin", s->e.jmin);
   setnum(L, "jmax", s->e.jmax);
   if (s->heat) { /* heat.h */
@@ -799,7 +831,7 @@ static int lparticles(lua_State *L) {
   return 1;
 }
 
-/* sim:wall_force("left") -> fx, fy: the force that side put on the
+/* sim:wall_force("left") -> fx, fy[, fz]: the force that side put on the
 ** material in the last step */
 static int lwall_force(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
@@ -851,6 +883,10 @@ static int lcontacts(lua_State *L) {
     lua_setfield(L, -2, "fx");
     lua_pushnumber(L, cp[k].f[1]);
     lua_setfield(L, -2, "fy");
+    if (DIM == 3) {
+      lua_pushnumber(L, cp[k].f[DIM - 1]);
+      lua_setfield(L, -2, "fz");
+    }
     lua_pushinteger(L, cp[k].nodes);
     lua_setfield(L, -2, "nodes");
     lua_rawseti(L, -2, (lua_Integer)k + 1);
@@ -885,6 +921,7 @@ static int lindex(lua_State *L) {
     if (adv) lua_pushstring(L, adv); else lua_pushnil(L);
   }
   else if (strcmp(k, "cell") == 0) lua_pushnumber(L, s->g.h);
+  else if (strcmp(k, "dim") == 0) lua_pushinteger(L, DIM);
   else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->flip);
   else if (strcmp(k, "cfl") == 0) lua_pushnumber(L, s->cfl);
   else if (strcmp(k, "friction") == 0) lua_pushnumber(L, s->mu_default);
@@ -921,7 +958,7 @@ static int lindex(lua_State *L) {
   else {
     static const char *const fields[] = {
         "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "cell",
-        "flip", "cfl", "friction", "removed", "threads", "shared_nodes",
+        "dim", "flip", "cfl", "friction", "removed", "threads", "shared_nodes",
         "memory", "outdir", "update", "shape", "transfer", "ignition_time",
         "ignition", "reaction_tol", "reacted", "reaction_substeps", NULL};
     luaL_getmetafield(L, 1, "methods");

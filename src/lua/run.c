@@ -132,7 +132,21 @@ static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "heat_residual", "residual_with_heat"};
 #define NCOLS_ALL (int)(sizeof cols / sizeof cols[0])
 #define NCOLS_HEAT 10
-#define NCOLS (ls->s.heat ? NCOLS_ALL : NCOLS_ALL - NCOLS_HEAT)
+/* in 3-D, after the hot spots and before the heat: the third momentum
+** and the x, y components of the angular momentum ("angmom" is its z) */
+static const char *const cols3[] = {"pz", "angmom_x", "angmom_y"};
+#define NCOLS_3D (DIM == 3 ? 3 : 0)
+#define NCOLS_BASE (NCOLS_ALL - NCOLS_HEAT)
+#define NCOLS (NCOLS_BASE + NCOLS_3D + (ls->s.heat ? NCOLS_HEAT : 0))
+
+/* the columns in this build's order: the 2-D ones, the 3-D ones, heat */
+static void csv_cols(const char **names) {
+  int k;
+  for (k = 0; k < NCOLS_BASE; k++) names[k] = cols[k];
+  for (k = 0; k < NCOLS_3D; k++) names[NCOLS_BASE + k] = cols3[k];
+  for (k = 0; k < NCOLS_HEAT; k++)
+    names[NCOLS_BASE + NCOLS_3D + k] = cols[NCOLS_BASE + k];
+}
 
 static void csv_row(lua_State *L, lsim *ls) {
   sim *s = &ls->s;
@@ -143,7 +157,8 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[6] = s->e.plastic; v[7] = s->e.viscous;
   v[8] = s->e.boundary; v[9] = s->e.thermal; v[10] = tot;
   v[11] = sim_residual(s);
-  v[12] = s->e.mom[0]; v[13] = s->e.mom[1]; v[14] = s->e.angmom[2];
+  v[12] = s->e.mom[0]; v[13] = s->e.mom[1];
+  v[14] = LSIM_COMP(s->e.angmom)[LSIM_NCOMP(s->e.angmom) - 1];
   v[15] = s->e.jmin; v[16] = s->e.jmax; v[17] = (double)s->ps.n;
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
   v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;
@@ -160,7 +175,19 @@ static void csv_row(lua_State *L, lsim *ls) {
     v[39] = s->e.heat_thermal; v[40] = sim_heat_residual(s);
     v[41] = sim_residual_all(s);
   }
-  if (out_csv_row(&ls->csv, v, err, sizeof err)) luaL_error(L, "%s", err);
+  if (NCOLS_3D) { /* the 3-D columns go before the heat's */
+    double w[NCOLS_ALL + 3];
+    const double *am = LSIM_COMP(s->e.angmom);
+    int k, n3 = LSIM_NCOMP(s->e.angmom) == 3;
+    for (k = 0; k < NCOLS_BASE; k++) w[k] = v[k];
+    w[NCOLS_BASE] = s->e.mom[DIM - 1];
+    w[NCOLS_BASE + 1] = n3 ? am[0] : 0;
+    w[NCOLS_BASE + 2] = n3 ? am[1] : 0;
+    for (k = 0; s->heat && k < NCOLS_HEAT; k++)
+      w[NCOLS_BASE + 3 + k] = v[NCOLS_BASE + k];
+    if (out_csv_row(&ls->csv, w, err, sizeof err)) luaL_error(L, "%s", err);
+  } else if (out_csv_row(&ls->csv, v, err, sizeof err))
+    luaL_error(L, "%s", err);
 }
 
 /* the provenance every output file carries: the strings are pushed on
@@ -339,7 +366,9 @@ static void out_start(lua_State *L, lsim *ls) {
   if (ls->csv_every > 0) {
     snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
     csv_check(L, path);
-    if (out_csv_open(&ls->csv, path, csv_preamble(L), cols, NCOLS, err,
+    const char *names[NCOLS_ALL + 3];
+    csv_cols(names);
+    if (out_csv_open(&ls->csv, path, csv_preamble(L), names, NCOLS, err,
                      sizeof err))
       luaL_error(L, "%s", err);
     lua_pop(L, 1);

@@ -1,0 +1,168 @@
+-- Shapes and seeding in this build's dimension (lua_shape.c, lua_body.c).
+--   1. The seeded measure (area in 2-D, volume in 3-D) of each shape is
+--      the count of lattice points inside it times the point's share of
+--      a cell; it converges to the shape's exact measure as the cell
+--      shrinks.  Three resolutions, the error and observed order at
+--      each.  The exact measures are the formulas (pi r^2, 4/3 pi r^3,
+--      the shoelace area ...), not the code's own lshape_area, which is
+--      checked against them separately.
+--   2. The other names of a shape (ball = disk, shell = annulus, box =
+--      rect) seed the very same points.
+--   3. A body given angular_velocity w spins rigidly: its particles'
+--      angular momentum about the centroid is w sum m r^2 (2-D,
+--      b:diag()), and its centre of mass is at rest.
+--   4. A ball across a periodic seam seeds its image (the whole ball's
+--      measure); a body from points (x, y[, z]) has the points' mass.
+--   5. Bad shapes are refused with the field and the expected count.
+local mvmpm = require "mvmpm"
+local V = require "mvmpm.verify"
+local D = mvmpm.dim
+local pi = math.pi
+
+-- a point of D coordinates from the first D of x, y, z
+local function P(x, y, z) if D == 2 then return {x, y} end return {x, y, z} end
+
+local function domain()
+  if D == 2 then return {x = {0, 1}, y = {0, 1}} end
+  return {x = {0, 1}, y = {0, 1}, z = {0, 1}}
+end
+
+-- the seeded measure of shape at cell 1 / n (density 1, volume = "cell")
+local function seeded(n, shape)
+  local s = mvmpm.sim {domain = domain(), cell = 1 / n, ppc = 2, dim = D}
+  local b = s:body {shape = shape(), material = mvmpm.elastic {K = 1, G = 1, density = 1}}
+  return b:mass()
+end
+
+local shapes = {}
+if D == 2 then
+  shapes = {
+    {"disk r = 0.3", function() return mvmpm.disk {center = P(0.5, 0.5), radius = 0.3} end,
+     pi * 0.09},
+    {"annulus 0.15 .. 0.3", function()
+       return mvmpm.annulus {center = P(0.5, 0.5), inner = 0.15, outer = 0.3} end,
+     pi * (0.09 - 0.0225)},
+    {"polygon (triangle)", function()
+       return mvmpm.polygon {{0.1, 0.1}, {0.9, 0.2}, {0.3, 0.8}} end,
+     0.5 * math.abs((0.9 - 0.1) * (0.8 - 0.1) - (0.3 - 0.1) * (0.2 - 0.1))},
+    {"cylinder (tilted strip)", function()
+       return mvmpm.cylinder {from = P(0.2, 0.3), to = P(0.8, 0.7), radius = 0.1} end,
+     2 * 0.1 * math.sqrt(0.36 + 0.16)},
+  }
+else
+  shapes = {
+    {"ball r = 0.3", function() return mvmpm.ball {center = P(0.5, 0.5, 0.5), radius = 0.3} end,
+     4 / 3 * pi * 0.027},
+    {"shell 0.15 .. 0.3", function()
+       return mvmpm.shell {center = P(0.5, 0.5, 0.5), inner = 0.15, outer = 0.3} end,
+     4 / 3 * pi * (0.027 - 0.003375)},
+    {"extrude (triangle along y)", function()
+       return mvmpm.extrude {polygon = {{0.1, 0.1}, {0.9, 0.2}, {0.3, 0.8}}, axis = "y",
+                             lo = 0.2, hi = 0.7} end,
+     0.5 * math.abs((0.9 - 0.1) * (0.8 - 0.1) - (0.3 - 0.1) * (0.2 - 0.1)) * 0.5},
+    {"cylinder (tilted)", function()
+       return mvmpm.cylinder {from = P(0.25, 0.3, 0.2), to = P(0.75, 0.6, 0.8), radius = 0.15} end,
+     pi * 0.0225 * math.sqrt(0.25 + 0.09 + 0.36)},
+  }
+end
+
+V.case(string.format("%d-D: the seeded measure converges to the exact one", D))
+local ns = D == 2 and {10, 20, 40} or {8, 16, 32}
+for _, sh in ipairs(shapes) do
+  local name, make, exact = sh[1], sh[2], sh[3]
+  local errs = {}
+  for i, n in ipairs(ns) do
+    errs[i] = math.abs(seeded(n, make) - exact) / exact
+    V.info(string.format("%s: relative error at cell 1/%d", name, n), errs[i])
+  end
+  V.info(name .. ": observed order (finest pair)", math.log(errs[2] / errs[3], 2))
+  V.below(name .. ": relative error at the finest cell", errs[3], 0.02)
+  V.below(name .. ": error shrinks (finest / coarsest)", errs[3] / errs[1], 0.6)
+  V.near(name .. ": s:area() is the exact measure", make():area(), exact, 1e-12, true)
+end
+
+V.case("the other names seed the same points")
+local function count(shape)
+  local s = mvmpm.sim {domain = domain(), cell = 0.05, dim = D}
+  return s:body {shape = shape, material = mvmpm.elastic {K = 1, G = 1, density = 1}}:mass()
+end
+local c = P(0.5, 0.5, 0.5)
+V.near("ball = disk", count(mvmpm.ball {center = c, radius = 0.3}),
+       count(mvmpm.disk {center = c, radius = 0.3}), 0)
+V.near("shell = annulus", count(mvmpm.shell {center = c, inner = 0.1, outer = 0.3}),
+       count(mvmpm.annulus {center = c, inner = 0.1, outer = 0.3}), 0)
+V.near("box = rect", count(mvmpm.box {lo = P(0.2, 0.2, 0.2), hi = P(0.7, 0.6, 0.9)}),
+       count(mvmpm.rect {lo = P(0.2, 0.2, 0.2), hi = P(0.7, 0.6, 0.9)}), 0)
+V.near("box measure", count(mvmpm.box {lo = P(0.2, 0.2, 0.2), hi = P(0.7, 0.6, 0.9)}),
+       D == 2 and 0.5 * 0.4 or 0.5 * 0.4 * 0.7, 1e-12, true)
+
+V.case("a shape across a periodic seam seeds its image")
+do
+  local sides = {left = "periodic", right = "periodic"}
+  local sp = mvmpm.sim {domain = domain(), cell = 0.05, dim = D, sides = sides}
+  local m = mvmpm.elastic {K = 1, G = 1, density = 1}
+  -- shifted by 9 cells from the middle: the same lattice offsets
+  local seam = sp:body {shape = mvmpm.ball {center = P(0.95, 0.5, 0.5), radius = 0.2}, material = m}
+  local whole = count(mvmpm.ball {center = P(0.5, 0.5, 0.5), radius = 0.2})
+  V.near("the ball across the seam has the whole ball's measure", seam:mass(), whole, 1e-12, true)
+  local cx = seam:centroid()
+  V.near("its centroid is where the ball is, across the seam", cx, 0.95, 1e-9)
+end
+
+V.case("a body from points")
+do
+  local sp = mvmpm.sim {domain = domain(), cell = 0.05, dim = D}
+  local pts = {x = {0.1, 0.2, 0.3}, y = {0.4, 0.5, 0.6}, volume = 0.01}
+  if D == 3 then pts.z = {0.7, 0.8, 0.9} end
+  local b = sp:body {points = pts, material = mvmpm.elastic {K = 1, G = 1, density = 2}}
+  V.near("mass = density x volume x points", b:mass(), 2 * 0.01 * 3, 1e-12, true)
+  local c = {b:centroid()}
+  V.near("centroid x", c[1], 0.2, 1e-12)
+  V.near("centroid " .. (D == 2 and "y" or "z"), c[D], D == 2 and 0.5 or 0.8, 1e-12)
+  V.holds("centroid has one number per axis", #c == D, #c)
+end
+
+if D == 2 then
+  V.case("angular_velocity: a rigid spin, L = w sum m r^2")
+  local s = mvmpm.sim {domain = domain(), cell = 0.05}
+  local b = s:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.3},
+                    material = mvmpm.elastic {K = 1, G = 1, density = 1},
+                    angular_velocity = 2}
+  -- the diagnostics' inertia counts each particle's square (side a =
+  -- cell / ppc) as well, a^2 / 6 per unit mass, which the point spin
+  -- does not carry: L = w (I - m a^2 / 6)
+  local d, a = b:diag(), 0.05 / 2
+  V.near("angmom = 2 (inertia - mass a^2 / 6)", d.angmom,
+         2 * (d.inertia - d.mass * a * a / 6), 1e-12, true)
+  V.near("centre-of-mass velocity x", d.vx, 0, 1e-14)
+  V.near("centre-of-mass velocity y", d.vy, 0, 1e-14)
+end
+
+V.case("bad shapes: the field and the expected count")
+local function refuses(name, fn, pattern)
+  local ok, err = pcall(fn)
+  err = tostring(err)
+  V.holds(name, not ok and err:find(pattern, 1, true) ~= nil, 0, err)
+end
+local wrong = D == 2 and {0.5, 0.5, 0.5} or {0.5, 0.5}
+refuses("disk with the wrong count", function() mvmpm.disk {center = wrong, radius = 0.1} end,
+        string.format("disk: field 'center' must be a list of %d numbers", D))
+refuses("box with the wrong count", function() mvmpm.box {lo = wrong, hi = wrong} end,
+        string.format("box: field 'lo' must be a list of %d numbers", D))
+refuses("cylinder with equal ends", function()
+  mvmpm.cylinder {from = P(0.5, 0.5, 0.5), to = P(0.5, 0.5, 0.5), radius = 0.1} end,
+  "cylinder: fields 'from' and 'to' must be distinct points")
+refuses("a sim of another dimension", function()
+  mvmpm.sim {domain = domain(), cell = 0.1, dim = 5 - D} end,
+  string.format("this build simulates %d-D", D))
+if D == 2 then
+  refuses("extrude in 2-D", function()
+    mvmpm.extrude {polygon = {{0, 0}, {1, 0}, {0, 1}}, lo = 0, hi = 1} end,
+    "extrude: this build simulates 2-D")
+else
+  refuses("polygon in 3-D", function() mvmpm.polygon {{0, 0}, {1, 0}, {0, 1}} end,
+          "polygon: a polygon is plane")
+  refuses("extrude with hi <= lo", function()
+    mvmpm.extrude {polygon = {{0, 0}, {1, 0}, {0, 1}}, lo = 1, hi = 1} end,
+    "extrude: field 'hi' must exceed 'lo'")
+end

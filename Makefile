@@ -94,10 +94,34 @@ INC_lua    = -Isrc/core -Isrc/io -Isrc/render -Isrc/lua $(PC_LUA)
 INC_app    = -Isrc/core -Isrc/io -Isrc/render -Isrc/lua -Isrc/app $(PC_APP)
 # a source's layer: the directory under src/ of the object's stem
 layer   = $(firstword $(subst /, ,$(1)))
+empty   :=
+space   := $(empty) $(empty)
 
 SRC     = $(wildcard $(LAYERS:%=src/%/*.c))
+# One binary runs 2-D and 3-D scenes.  Every source that sees dim.h is
+# compiled twice, for DIM = 2 into $(BUILD) and for DIM = 3 into
+# $(BUILD)/d3; the 3-D objects are linked into one relocatable object
+# whose every global name gets the suffix _3d (objcopy), so the two
+# dimensions' functions live side by side.  The sources below never see
+# dim.h and are built once: their state (the interrupt flag, the Lua
+# registry helpers) must be one for both.  make checks this list against
+# the compiler's dependency files.  The application layer is built once,
+# for 2-D: it reaches 3-D through the Lua layer (mvmpm.sim{dim = 3}).
+DIMFREE = core/hash core/par core/shape io/h5sum io/ofile io/out_csv \
+          lua/interrupt lua/lstate lua/version render/axis \
+          render/canvas render/cmap render/font render/plot_png render/png \
+          render/svg
+# the names each dimension's code calls in the other (lmvmpm.h)
+DIMKEEP = lmvmpm_enter3
+SRC3    = $(filter-out $(DIMFREE:%=src/%.c) src/app/%,$(SRC))
+OBJ3    = $(SRC3:src/%.c=$(BUILD)/d3/%.o)
 OBJ     = $(SRC:src/%.c=$(BUILD)/%.o)
-LIBOBJ  = $(filter-out $(BUILD)/app/main.o,$(OBJ))
+ifeq ($(D3),1)
+DIM3OBJ =
+else
+DIM3OBJ = $(BUILD)/dim3.o
+endif
+LIBOBJ  = $(filter-out $(BUILD)/app/main.o,$(OBJ)) $(DIM3OBJ)
 UNIT    = $(wildcard tests/unit/test_*.c)
 UNITBIN = $(UNIT:tests/unit/%.c=$(BUILD)/unit/%)
 
@@ -109,12 +133,28 @@ FLAGSTAMP = $(BUILD)/flags
 FLAGTEXT = $(CC) $(CFLAGS) $(foreach l,$(LAYERS),$(l): $(INC_$(l)))
 $(shell mkdir -p $(BUILD); echo '$(FLAGTEXT)' | cmp -s - $(FLAGSTAMP) 2>/dev/null || echo '$(FLAGTEXT)' > $(FLAGSTAMP))
 
-$(BIN): $(OBJ)
-	$(CC) $(CFLAGS) -o $@ $(OBJ) $(LDLIBS)
+$(BIN): $(OBJ) $(DIM3OBJ)
+	$(CC) $(CFLAGS) -o $@ $(OBJ) $(DIM3OBJ) $(LDLIBS)
+
+$(BUILD)/d3/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -DDIM=3 $(INC_$(call layer,$*)) -c $< -o $@
 
 $(BUILD)/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(INC_$(call layer,$*)) -c $< -o $@
+
+# the 3-D objects as one, every global name they define suffixed _3d but
+# those of DIMKEEP; and a DIMFREE source that comes to see dim.h stops
+# the build (its .d file names it)
+$(BUILD)/dim3.o: $(OBJ3) $(OBJ)
+	@for f in $(DIMFREE); do if grep -q 'dim\.h' $(BUILD)/$$f.d 2>/dev/null; then \
+	  echo "src/$$f.c includes dim.h: take it out of DIMFREE in the Makefile" >&2; exit 1; fi; done
+	$(CC) $(CFLAGS) -r -nostdlib -o $@.tmp $(OBJ3)
+	nm -g --defined-only $@.tmp | awk 'NF == 3 { print $$3 " " $$3 "_3d" }' | \
+	  grep -v -E '^($(subst $(space),|,$(DIMKEEP))) ' > $@.syms
+	objcopy --redefine-syms=$@.syms $@.tmp $@
+	rm -f $@.tmp
 
 # the build's identity (src/lua/version.c): git describe of this tree, else
 # the release number, and the compiler and flags.  The header is
@@ -182,7 +222,7 @@ clean:
 # The Lua module for a stock interpreter: the engine's objects built again
 # position-independent, linked without liblua (the interpreter has it;
 # two copies of Lua in one process would corrupt its state)
-PICOBJ = $(LIBOBJ:$(BUILD)/%.o=$(BUILD)/pic/%.o)
+PICOBJ = $(patsubst $(BUILD)/%.o,$(BUILD)/pic/%.o,$(filter-out $(DIM3OBJ),$(LIBOBJ)))
 LUALIBS = $(shell pkg-config --libs hdf5 libedit zlib 2>/dev/null) -lm -pthread
 $(BUILD)/pic/%.o: src/%.c $(FLAGSTAMP) | $(BUILD)/pic
 	@mkdir -p $(@D)
@@ -251,7 +291,7 @@ study: $(BIN)
 FORCE:
 
 .PHONY: FORCE all deps deps-paraview unit test layers bench clean module install uninstall print-cflags check-paraview figures hard pbx-scale pbx-shear fuzz random study
--include $(OBJ:.o=.d) $(UNITBIN:=.d) $(PICOBJ:.o=.d)
+-include $(OBJ:.o=.d) $(OBJ3:.o=.d) $(UNITBIN:=.d) $(PICOBJ:.o=.d)
 
 # ParaView (Debian's paraview, installed by make deps-paraview; not a
 # build dependency) opens a run's XDMF series with each of its three

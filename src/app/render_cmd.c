@@ -2,7 +2,10 @@
 ** render_cmd.c - the render command: read a snapshot or a checkpoint,
 ** draw it.  The picture is framed by the domain the file records and
 ** its legend names the bodies; files from before those were stored are
-** framed by the particles' extent and say "body N".
+** framed by the particles' extent and say "body N".  A 3-D file is drawn
+** looking along --axis (z by default): a slice at --at (the middle of
+** the stored domain by default) or, with --project, all the particles
+** (render_png.h); --domain is then the window in the picture's axes.
 */
 #include <math.h>
 #include <stdio.h>
@@ -41,7 +44,9 @@ static int usage_error(const char *msg, const char *arg) {
           "                    [--range LO,HI|robust|full] [--log] "
           "[--colormap auto|seq|div] [--title TEXT]\n"
           "                    [--domain X0,X1,Y0,Y1] [--no-axes] "
-          "[--matrix BODY]\n", prog, msg, arg ? " " : "", arg ? arg : "");
+          "[--matrix BODY]\n"
+          "                    3-D: [--axis x|y|z] [--at POS] [--thick T] "
+          "[--project]\n", prog, msg, arg ? " " : "", arg ? arg : "");
   return 2;
 }
 
@@ -69,7 +74,7 @@ int render_cmd(int argc, char **argv) {
   h5meta meta;
   h5frame fr;
   double dom[4];
-  int i, has_domain = 0, rc = 0, d, ck = 0;
+  int i, has_domain = 0, rc = 0, d, ck = 0, h, u, along;
   memset(&o, 0, sizeof o);
   o.by = "body";
   o.width = 800;
@@ -79,7 +84,9 @@ int render_cmd(int argc, char **argv) {
     int takes = strcmp(a, "--by") == 0 || strcmp(a, "--out") == 0 ||
                 strcmp(a, "--width") == 0 || strcmp(a, "--range") == 0 ||
                 strcmp(a, "--colormap") == 0 || strcmp(a, "--title") == 0 ||
-                strcmp(a, "--domain") == 0 || strcmp(a, "--matrix") == 0;
+                strcmp(a, "--domain") == 0 || strcmp(a, "--matrix") == 0 ||
+                strcmp(a, "--axis") == 0 || strcmp(a, "--at") == 0 ||
+                strcmp(a, "--thick") == 0;
     if (takes && !val) return usage_error("missing value after", a);
     if (strcmp(a, "--by") == 0) o.by = val;
     else if (strcmp(a, "--out") == 0) out = val;
@@ -87,6 +94,22 @@ int render_cmd(int argc, char **argv) {
     else if (strcmp(a, "--matrix") == 0) o.matrix = val;
     else if (strcmp(a, "--log") == 0) o.log = 1;
     else if (strcmp(a, "--no-axes") == 0) o.noaxes = 1;
+    else if (strcmp(a, "--project") == 0) o.project = 1;
+    else if (strcmp(a, "--axis") == 0) o.axis = val;
+    else if (strcmp(a, "--at") == 0) {
+      if (numlist(val, &o.at, 1)) {
+        fprintf(stderr, "%s: --at must be a finite number (got '%s')\n", prog,
+                val);
+        return 2;
+      }
+      o.has_at = 1;
+    } else if (strcmp(a, "--thick") == 0) {
+      if (numlist(val, &o.thick, 1) || !(o.thick > 0)) {
+        fprintf(stderr, "%s: --thick must be a number above 0 (got '%s')\n",
+                prog, val);
+        return 2;
+      }
+    }
     else if (strcmp(a, "--width") == 0) {
       char *end;
       long w = strtol(val, &end, 10);
@@ -126,6 +149,10 @@ int render_cmd(int argc, char **argv) {
     if (takes) i++;
   }
   if (!snap) return usage_error("no snapshot given", NULL);
+  if (render_view_axes(o.axis, &h, &u, &along, err, sizeof err)) {
+    fprintf(stderr, "%s: --axis: %s\n", prog, err);
+    return 2;
+  }
   if (!out) {
     size_t n = strlen(snap);
     if (n > 3 && strcmp(snap + n - 3, ".h5") == 0) n -= 3;
@@ -163,7 +190,7 @@ int render_cmd(int argc, char **argv) {
     rc = 1;
     goto done;
   }
-  for (d = 0; fr.has_domain && d < 2; d++)
+  for (d = 0; fr.has_domain && d < DIM; d++)
     if (!(isfinite(fr.lo[d]) && isfinite(fr.hi[d]) && fr.hi[d] > fr.lo[d])) {
       fprintf(stderr, "%s: %s: the stored domain [%g, %g] x [%g, %g] is not "
               "a finite box (give --domain X0,X1,Y0,Y1)\n", prog, snap,
@@ -197,24 +224,26 @@ int render_cmd(int argc, char **argv) {
     }
   }
   o.unit = render_length_unit(fr.units);
+  /* the window in the picture's axes: h across, u up */
   if (has_domain) {
     o.lo[0] = dom[0]; o.hi[0] = dom[1];
     o.lo[1] = dom[2]; o.hi[1] = dom[3];
   } else if (fr.has_domain) {
     for (d = 0; d < 2; d++) {
-      o.lo[d] = fr.lo[d];
-      o.hi[d] = fr.hi[d];
+      o.lo[d] = fr.lo[d ? u : h];
+      o.hi[d] = fr.hi[d ? u : h];
     }
   } else {
     size_t k;
     double pad = meta.cell > 0 ? meta.cell : 0;
     for (d = 0; d < 2; d++) {
+      const double *x = ps.x[d ? u : h];
       o.lo[d] = HUGE_VAL;
       o.hi[d] = -HUGE_VAL;
       for (k = 0; k < ps.n; k++)
-        if (isfinite(ps.x[d][k])) {
-          if (ps.x[d][k] < o.lo[d]) o.lo[d] = ps.x[d][k];
-          if (ps.x[d][k] > o.hi[d]) o.hi[d] = ps.x[d][k];
+        if (isfinite(x[k])) {
+          if (x[k] < o.lo[d]) o.lo[d] = x[k];
+          if (x[k] > o.hi[d]) o.hi[d] = x[k];
         }
       if (o.lo[d] > o.hi[d]) { o.lo[d] = 0; o.hi[d] = 1; } /* no particles */
       if (pad <= 0) pad = 0.05 * (o.hi[d] - o.lo[d]);
@@ -223,10 +252,23 @@ int render_cmd(int argc, char **argv) {
       o.hi[d] += pad;
     }
   }
-  if (!title) {
-    snprintf(titlebuf, sizeof titlebuf, "%s   t = %.6g", o.by, meta.time);
-    title = titlebuf;
+  /* a 3-D slice goes through the middle of the stored domain */
+  if (along >= 0 && !o.has_at && fr.has_domain) {
+    o.at = fr.lo[along] / 2 + fr.hi[along] / 2;
+    o.has_at = 1;
   }
+  if (!title && along < 0)
+    snprintf(titlebuf, sizeof titlebuf, "%s   t = %.6g", o.by, meta.time);
+  else if (!title && o.project)
+    snprintf(titlebuf, sizeof titlebuf, "%s   t = %.6g   along %c", o.by,
+             meta.time, "xyz"[along]);
+  else if (!title && o.has_at)
+    snprintf(titlebuf, sizeof titlebuf, "%s   t = %.6g   %c = %.6g", o.by,
+             meta.time, "xyz"[along], o.at);
+  else if (!title)
+    snprintf(titlebuf, sizeof titlebuf, "%s   t = %.6g   %c slice", o.by,
+             meta.time, "xyz"[along]);
+  if (!title) title = titlebuf;
   o.title = title;
   if (render_file(out, &ps, &o, err, sizeof err)) {
     fprintf(stderr, "%s: %s\n", prog, err);

@@ -4,7 +4,8 @@
 **
 ** The particles are cut into parts of consecutive indices, one per
 ** thread.  Kept sorted by cell (row by row along the last dimension), a
-** part reaches a band of node rows.  Every node's sum must be added in
+** part reaches a band of node rows (a row: the nodes of one index along
+** the last dimension, a line in 2-D, a plane in 3-D).  Every node's sum must be added in
 ** the particles' stored order: that is what one thread does, and it is
 ** what the sums are with any number.  So each node row is written in
 ** two passes: in the first, by the first part that reaches it; in the

@@ -34,6 +34,7 @@
 #include "par.h"
 #include "sim.h"
 #include "stencil.h"
+#include "vec.h"
 
 /* the stencil with the shape kind a constant in each branch (which also
 ** lets the compiler see every weight written) */
@@ -49,15 +50,20 @@ static void eval(const sim *s, const stencil_geo *geo, const double *x,
 /* the node nearest to x: the one whose share of the interface the
 ** particle's bond is */
 static int32_t nearest(const grid *g, const double *x) {
-  int32_t node = 0, stride = 1;
-  int d;
-  for (d = 0; d < DIM; d++) {
-    int i = (int)floor((x[d] - g->lo[d]) * g->inv_h + 0.5) +
-            (g->periodic[d] ? 0 : g->pad);
-    node += stride * grid_wrap(g, d, i);
-    stride *= g->n[d];
-  }
-  return node;
+  int i[DIM], d;
+  for (d = 0; d < DIM; d++)
+    i[d] = grid_wrap(g, d, (int)floor((x[d] - g->lo[d]) * g->inv_h + 0.5) +
+                               (g->periodic[d] ? 0 : g->pad));
+  return grid_node(g, i);
+}
+
+/* the current volume of particle i, vol0 det F (2-D: the in-plane
+** determinant, an area times the unit depth of plane strain) */
+static double volume(const particles *ps, size_t i) {
+  double F[NTENS];
+  int k;
+  for (k = 0; k < NTENS; k++) F[k] = ps->F[k][i];
+  return ps->vol0[i] * vec_det(F);
 }
 
 /* particle i's displacement since its bond was cut (the nearest image
@@ -82,19 +88,15 @@ static void fit(sim *s, int32_t n, int32_t f, const double x[DIM], double w,
   const particles *ps = &s->ps;
   double u[DIM], sg[DIM * (DIM + 1) / 2], *b = s->bfit;
   size_t N = g->nnodes;
-  int32_t idx = n;
-  int d, a, c = 0;
+  int id[DIM], d, a, c = 0;
+  grid_ijk(g, n, id);
   for (d = 0; d < DIM; d++) {
-    int id = idx % g->n[d];
-    idx /= g->n[d];
-    u[d] = (x[d] - grid_x(g, d, id)) * g->inv_h;
+    u[d] = (x[d] - grid_x(g, d, id[d])) * g->inv_h;
     if (g->periodic[d]) u[d] -= g->n[d] * floor(u[d] / g->n[d] + 0.5);
   }
-#if DIM == 2
-  sg[0] = ps->s[S_XX][i];
-  sg[1] = ps->s[S_XY][i];
-  sg[2] = ps->s[S_YY][i];
-#endif
+  /* the stress in the order of the sums, grid_sym's */
+  for (d = 0; d < DIM; d++)
+    for (a = d; a < DIM; a++) sg[grid_sym(d, a)] = ps->s[vec_sym(d, a)][i];
   s->bffield[n] = f;
   b[BF_W * N + n] += w;
   for (d = 0; d < DIM; d++) {
@@ -141,9 +143,7 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
       continue;
     eval(s, &geo, x, &st);
     if (rel[i] > 0) released(g, ps, s->frel, i, u);
-#if DIM == 2
-    V = ps->vol0[i] * (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
-#endif
+    V = volume(ps, i);
     for (k = 0; k < (size_t)st.n; k++) {
       int32_t n = st.node[k], sl;
       if (blk >= 0 && !mine[k / nw]) continue;
@@ -154,11 +154,11 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
       sl = grid_slot(g, n, f);
       g->sb[sl] += st.w[k] * mp * bp[i];
       g->ssw[sl] += V * st.w[k];
-#if DIM == 2
-      g->sst[0][sl] += V * st.w[k] * ps->s[S_XX][i];
-      g->sst[1][sl] += V * st.w[k] * ps->s[S_XY][i];
-      g->sst[2][sl] += V * st.w[k] * ps->s[S_YY][i];
-#endif
+      for (d = 0; d < DIM; d++) {
+        int a;
+        for (a = d; a < DIM; a++)
+          g->sst[grid_sym(d, a)][sl] += V * st.w[k] * ps->s[vec_sym(d, a)][i];
+      }
       if (!byvol)
         for (d = 0; d < DIM; d++) g->sv[d][sl] += V * st.dw[d][k];
       if (rel[i] > 0) {

@@ -1,8 +1,11 @@
 /*
 ** boundary.c - domain sides and driven bodies, on the updated momentum.
 **
-** A wall side acts on the nodes of its grid line (and any ghost nodes
-** beyond it) with the exact normal of the side.  With v_w the wall's
+** A wall side acts on the nodes of its grid plane (a line in 2-D; and
+** any ghost planes beyond it) with the exact normal of the side.  A
+** plane's nodes are its columns j = 0 .. grid_face_count - 1, numbered
+** as grid_face_node numbers them; the per-column arrays of a side (ext,
+** acted, hm) are indexed by plane and column.  With v_w the wall's
 ** velocity and n the side's outward normal, a node of mass m and momentum
 ** q approaches the wall when dn = (q - m v_w).n > 0; the normal part is
 ** then removed and the tangential part reduced by mu dn (Coulomb; removed
@@ -85,14 +88,15 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
 static void wall_line(sim *s, int k, int line, int first) {
   grid *g = &s->g;
   side *sd = &s->sides[k];
-  int d = k / 2, o = 1 - d, j;
+  int d = k / 2;
   double sign = (k & 1) ? 1.0 : -1.0;
   double *const *mom = g->q, *const *smom = g->sq;
-  for (j = 0; j < g->n[o]; j++) {
-    int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;
+  size_t j, nf = sd->next;
+  for (j = 0; j < nf; j++) {
+    int32_t n = grid_face_node(g, d, line, j), sl;
     double imp[DIM];
     int e;
-    unsigned char *act = sd->acted + (size_t)(line - first) * g->n[o] + j;
+    unsigned char *act = sd->acted + (size_t)(line - first) * nf + j;
     double gap = s->gap_check ? -sd->ext[j] : 0;
     *act = 0;
     if (g->m[n] <= s->mcut) continue;
@@ -113,7 +117,7 @@ static void wall_line(sim *s, int k, int line, int first) {
   }
 }
 
-/* the node lines side k acts on: its wall line and the ghost lines
+/* the node planes side k acts on: its wall plane and the ghost planes
 ** beyond it, [*first, *last] along the side's normal */
 static void wall_lines(const grid *g, int k, int *first, int *last) {
   int d = k / 2;
@@ -121,20 +125,23 @@ static void wall_lines(const grid *g, int k, int *first, int *last) {
   else { *first = 0; *last = g->pad; }
 }
 
-/* whether the wall acted at line (counted from the first) of column j */
-static int sd_acted(const sim *s, int k, int line, int j) {
-  return s->sides[k].acted[(size_t)line * s->g.n[1 - k / 2] + j];
+/* whether the wall acted on plane `line` (counted from the first) at
+** column j */
+static int sd_acted(const sim *s, int k, int line, size_t j) {
+  return s->sides[k].acted[(size_t)line * s->sides[k].next + j];
 }
 
-static int col_acted(const sim *s, int k, int j, int first, int last) {
+static int col_acted(const sim *s, int k, size_t j, int first, int last) {
   int line;
   for (line = 0; line <= last - first; line++)
     if (sd_acted(s, k, line, j)) return 1;
   return 0;
 }
 
-/* The patch rule (sim.wall_contact = "patch").  A run of consecutive
-** wall columns with material on the wall lines is one patch: the body's
+/* The patch rule (sim.wall_contact = "patch").  A connected set of wall
+** columns with material on the wall planes is one patch (in 2-D a run of
+** consecutive columns; in 3-D columns joined across the face, each to
+** its neighbours along the two tangential axes): the body's
 ** whole near-wall band, whose mass follows the body's shape and not the
 ** orientation of its particle lattice.  It is in contact once the
 ** material reaches the wall somewhere in it (the separation check).  Per
@@ -149,11 +156,6 @@ static int col_acted(const sim *s, int k, int j, int first, int last) {
 ** contact point move into the wall (the material does, the surface does
 ** not), and stopping them alone is a torque against the spin, with the
 ** arm of the flat of the lowest particle row. */
-
-/* node n of column j on line `line` of side k */
-static int32_t wall_nodeid(const grid *g, int d, int line, int j) {
-  return d == 0 ? line + g->n[0] * j : j + g->n[0] * line;
-}
 
 /* the field of a node no other field shares (the owner is marked only
 ** in scenes with more than one field) */
@@ -174,16 +176,15 @@ static int patch_entry(const sim *s, int32_t n, int32_t f, int32_t *sl) {
   return 0;
 }
 
-/* the smallest field above `after` with mass in columns [j0, j0 + len) */
-static int32_t patch_next_field(const sim *s, int k, int j0, int len,
-                                int first, int last, int32_t after) {
+/* the smallest field above `after` with mass in the len columns cols */
+static int32_t patch_next_field(const sim *s, int k, const int32_t *cols,
+                                int len, int first, int last, int32_t after) {
   const grid *g = &s->g;
-  int d = k / 2, o = 1 - d, a, line;
+  int d = k / 2, a, line;
   int32_t best = -1;
   for (a = 0; a < len; a++) {
-    int j = (j0 + a) % g->n[o];
     for (line = first; line <= last; line++) {
-      int32_t n = wall_nodeid(g, d, line, j), sl;
+      int32_t n = grid_face_node(g, d, line, (size_t)cols[a]), sl;
       if (g->head[n] < 0) {
         int32_t f = node_field(s, n);
         if (g->m[n] > s->mcut && f > after && (best < 0 || f < best)) best = f;
@@ -203,11 +204,12 @@ static int inner_line(int k, int first, int last) {
   return (k & 1) ? first - 1 : last + 1;
 }
 
-/* hm's entry of node line `line` (a wall line or the line inside) */
-static double *hm_at(const sim *s, int k, int first, int last, int line, int j) {
+/* hm's entry of node plane `line` (a wall plane or the plane inside) */
+static double *hm_at(const sim *s, int k, int first, int last, int line,
+                     size_t j) {
   const side *sd = &s->sides[k];
   int ls = line == inner_line(k, first, last) ? last - first + 1 : line - first;
-  return &sd->hm[(size_t)ls * s->g.n[1 - k / 2] + j];
+  return &sd->hm[(size_t)ls * sd->next + j];
 }
 
 /* Friction's arm.  An impulse on node i reaches the particles as
@@ -242,21 +244,23 @@ static void patch_heights(sim *s) {
   if (!any) return;
   stencil_geo_init(&geo, g);
   for (i = 0; i < ps->n; i++) {
-    double x[DIM] = {ps->x[0][i], ps->x[1][i]};
-    int have = 0, a;
+    double x[DIM];
+    int have = 0, a, d;
+    for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     for (k = 0; k < NSIDES; k++) {
       double dist;
-      int d = k / 2, o = 1 - d;
       if (!use[k]) continue;
+      d = k / 2;
       dist = (k & 1) ? xw[k] - x[d] : x[d] - xw[k];
       if (dist > reach) continue;
       if (!have) { stencil_eval(&geo, kind, x, s->lp, &st); have = 1; }
       for (a = 0; a < st.n; a++) {
-        int32_t n = st.node[a];
-        int id = d == 0 ? n % g->n[0] : n / g->n[0];
-        int j = o == 0 ? n % g->n[0] : n / g->n[0];
+        int ix[DIM], id;
+        grid_ijk(g, st.node[a], ix);
+        id = ix[d];
         if (!(id >= first[k] && id <= last[k]) && id != inner[k]) continue;
-        *hm_at(s, k, first[k], last[k], id, j) += st.w[a] * ps->m[i] * dist;
+        *hm_at(s, k, first[k], last[k], id, grid_face_index(g, d, ix)) +=
+            st.w[a] * ps->m[i] * dist;
       }
     }
   }
@@ -268,19 +272,19 @@ static double patch_mass(const sim *s, int32_t n, int32_t sl) {
   return sl < 0 ? s->g.m[n] : s->g.sm[sl];
 }
 
-static void patch_field(sim *s, int k, int j0, int len, int first, int last,
-                        int32_t f) {
+static void patch_field(sim *s, int k, const int32_t *cols, int len,
+                        int first, int last, int32_t f) {
   grid *g = &s->g;
   side *sd = &s->sides[k];
-  int d = k / 2, o = 1 - d, a, line, e, in = inner_line(k, first, last);
+  int d = k / 2, a, line, e, in = inner_line(k, first, last);
   double sign = (k & 1) ? 1.0 : -1.0, M = 0, P[DIM] = {0}, dv[DIM] = {0};
   double M1 = 0, H0 = 0, H1 = 0, dv1[DIM] = {0}, arm = 0;
   double dn, tt = 0, w = 0, loss = 0, c[DIM] = {0}, J[DIM] = {0};
   const int fric = sd->mu > 0 && s->wall_rule == WALL_COUPLE;
   for (a = 0; a < len; a++) {
-    int j = (j0 + a) % g->n[o];
+    size_t j = (size_t)cols[a];
     for (line = first; line <= last; line++) {
-      int32_t n = wall_nodeid(g, d, line, j), sl;
+      int32_t n = grid_face_node(g, d, line, j), sl;
       double m;
       if (!patch_entry(s, n, f, &sl)) continue;
       m = patch_mass(s, n, sl);
@@ -289,8 +293,8 @@ static void patch_field(sim *s, int k, int j0, int len, int first, int last,
       for (e = 0; e < DIM; e++)
         P[e] += (sl < 0 ? g->q[e][n] : g->sq[e][sl]) - m * sd->v[e];
     }
-    if (fric) { /* the line inside, for friction's arm */
-      int32_t n = wall_nodeid(g, d, in, j), sl;
+    if (fric) { /* the plane inside, for friction's arm */
+      int32_t n = grid_face_node(g, d, in, j), sl;
       double m;
       if (!patch_entry(s, n, f, &sl)) continue;
       m = patch_mass(s, n, sl);
@@ -332,17 +336,17 @@ static void patch_field(sim *s, int k, int j0, int len, int first, int last,
       dv[e] = -c[e];
   }
   for (a = 0; a < len; a++) {
-    int j = (j0 + a) % g->n[o];
+    size_t j = (size_t)cols[a];
     for (line = first; line <= last + 1; line++) {
       int32_t n, sl;
       double m, imp;
       const double *dvn = dv;
       if (line == last + 1) { /* the line inside: friction's couple */
         if (!(arm > 0)) break;
-        n = wall_nodeid(g, d, in, j);
+        n = grid_face_node(g, d, in, j);
         dvn = dv1;
       } else
-        n = wall_nodeid(g, d, line, j);
+        n = grid_face_node(g, d, line, j);
       if (!patch_entry(s, n, f, &sl)) continue;
       m = patch_mass(s, n, sl);
       for (e = 0; e < DIM; e++) {
@@ -366,29 +370,98 @@ static void patch_field(sim *s, int k, int j0, int len, int first, int last,
         w += imp * sd->v[e];
         sd->force[e] += imp / s->dt;
       }
-      if (line <= last) sd->acted[(size_t)(line - first) * g->n[o] + j] = 1;
+      if (line <= last) sd->acted[(size_t)(line - first) * sd->next + j] = 1;
     }
   }
   s->e.friction += loss;
   s->e.boundary += w;
 }
 
-/* whether column j of side k has material on the wall lines */
-static int patch_touch(const sim *s, int k, int j, int first, int last) {
+/* whether column j of side k has material on the wall planes */
+static int patch_touch(const sim *s, int k, size_t j, int first, int last) {
   const grid *g = &s->g;
   int d = k / 2, line;
   for (line = first; line <= last; line++)
-    if (g->m[wall_nodeid(g, d, line, j)] > s->mcut) return 1;
+    if (g->m[grid_face_node(g, d, line, j)] > s->mcut) return 1;
   return 0;
 }
 
 /* whether the material of a patch touches the wall somewhere */
-static int patch_gap(const sim *s, int k, int j0, int len) {
+static int patch_gap(const sim *s, int k, const int32_t *cols, int len) {
   int a;
   if (!s->gap_check) return 1;
   for (a = 0; a < len; a++)
-    if (s->sides[k].ext[(j0 + a) % s->g.n[1 - k / 2]] >= 0) return 1;
+    if (s->sides[k].ext[cols[a]] >= 0) return 1;
   return 0;
+}
+
+typedef int col_fn(const sim *s, int k, size_t j, int first, int last);
+
+/* The patches of side k: the columns where `in` holds, joined into
+** connected sets across the face (a column's neighbours are the next
+** ones along each tangential axis, across a periodic seam too).  The
+** columns are scanned from the first without contact where a tangential
+** axis is periodic (from 0 otherwise), the patches numbered as the scan
+** meets them and each patch's columns listed in scan order: in 2-D the
+** runs of consecutive columns, one patch across a seam.  Works in
+** s->wpatch (sim.c): lab, stack, cols, off; returns the number of patches,
+** patch p's columns being cols[off[p]] .. cols[off[p + 1] - 1]. */
+static int patch_find(const sim *s, int k, int first, int last, col_fn *in) {
+  const grid *g = &s->g;
+  const side *sd = &s->sides[k];
+  const size_t nf = sd->next;
+  int32_t *lab = s->wpatch, *stack = lab + nf, *cols = stack + nf;
+  int32_t *off = cols + nf;
+  int d = k / 2, e, np = 0, per = 0;
+  size_t j, start = 0, a;
+  for (j = 0; j < nf; j++) lab[j] = in(s, k, j, first, last) ? -2 : -1;
+  for (e = 0; e < DIM; e++) per |= e != d && g->periodic[e];
+  if (per) {
+    for (start = 0; start < nf && lab[start] == -2; start++) {}
+    if (start == nf) start = 0; /* the whole wall touches: one patch */
+  }
+  for (a = 0; a < nf; a++) {
+    size_t top = 0, j0 = (start + a) % nf;
+    if (lab[j0] != -2) continue;
+    lab[j0] = np;
+    stack[top++] = (int32_t)j0;
+    while (top) { /* flood the patch */
+      size_t c = (size_t)stack[--top], rest = c, stride = 1;
+      for (e = 0; e < DIM; e++) {
+        int t, dir;
+        if (e == d) continue;
+        t = (int)(rest % (size_t)g->n[e]);
+        rest /= (size_t)g->n[e];
+        for (dir = -1; dir <= 1; dir += 2) {
+          int u = t + dir;
+          size_t nb;
+          if (u < 0 || u >= g->n[e]) {
+            if (!g->periodic[e]) continue;
+            u = u < 0 ? u + g->n[e] : u - g->n[e];
+          }
+          nb = c + ((size_t)u - (size_t)t) * stride; /* wraps in size_t */
+          if (lab[nb] != -2) continue;
+          lab[nb] = np;
+          stack[top++] = (int32_t)nb;
+        }
+        stride *= (size_t)g->n[e];
+      }
+    }
+    np++;
+  }
+  /* each patch's columns in scan order: count, then place */
+  for (e = 0; e <= np; e++) off[e] = 0;
+  for (j = 0; j < nf; j++)
+    if (lab[j] >= 0) off[lab[j] + 1]++;
+  for (e = 0; e < np; e++) {
+    off[e + 1] += off[e];
+    stack[e] = off[e];
+  }
+  for (a = 0; a < nf; a++) {
+    size_t c = (start + a) % nf;
+    if (lab[c] >= 0) cols[stack[lab[c]]++] = (int32_t)c;
+  }
+  return np;
 }
 
 /* The patch rule stops a patch's mean approach, not each node's: where
@@ -399,12 +472,13 @@ static int patch_gap(const sim *s, int k, int j0, int len) {
 static void patch_deep(sim *s, int k, int first, int last) {
   grid *g = &s->g;
   side *sd = &s->sides[k];
-  int d = k / 2, o = 1 - d, j, line;
+  int d = k / 2, line;
   double sign = (k & 1) ? 1.0 : -1.0, tol = 0.9 * s->lp * g->h, w = 0;
-  for (j = 0; j < g->n[o]; j++) {
+  size_t j, nf = sd->next;
+  for (j = 0; j < nf; j++) {
     if (!(sd->ext[j] > tol)) continue;
     for (line = first; line <= last; line++) {
-      int32_t n = wall_nodeid(g, d, line, j), sl;
+      int32_t n = grid_face_node(g, d, line, j), sl;
       if (g->m[n] <= s->mcut) continue;
       if (g->head[n] < 0) {
         double dn = sign * (g->q[d][n] - g->m[n] * sd->v[d]);
@@ -413,7 +487,7 @@ static void patch_deep(sim *s, int k, int first, int last) {
         s->e.impact += 0.5 * (g->p[d][n] / g->m[n] - sd->v[d]) * sign * dn;
         sd->force[d] -= sign * dn / s->dt;
         w -= sign * dn * sd->v[d];
-        sd->acted[(size_t)(line - first) * g->n[o] + j] = 1;
+        sd->acted[(size_t)(line - first) * nf + j] = 1;
         continue;
       }
       for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
@@ -426,7 +500,7 @@ static void patch_deep(sim *s, int k, int first, int last) {
         s->e.impact += 0.5 * (g->sp[d][sl] / g->sm[sl] - sd->v[d]) * sign * dn;
         sd->force[d] -= sign * dn / s->dt;
         w -= sign * dn * sd->v[d];
-        sd->acted[(size_t)(line - first) * g->n[o] + j] = 1;
+        sd->acted[(size_t)(line - first) * nf + j] = 1;
       }
     }
   }
@@ -434,26 +508,19 @@ static void patch_deep(sim *s, int k, int first, int last) {
 }
 
 static void wall_patches(sim *s, int k, int first, int last) {
-  grid *g = &s->g;
   side *sd = &s->sides[k];
-  int d = k / 2, o = 1 - d, nj = g->n[o], j, start = 0, a;
-  memset(sd->acted, 0, (size_t)(last - first + 1) * nj);
-  /* start the runs after a column without contact, so that a run across
-  ** a periodic seam is one patch */
-  if (g->periodic[o]) {
-    for (start = 0; start < nj && patch_touch(s, k, start, first, last); start++) {}
-    if (start == nj) start = 0; /* the whole wall touches: one patch */
-  }
-  for (a = 0; a < nj;) {
-    int len = 0;
-    j = (start + a) % nj;
-    while (a + len < nj && patch_touch(s, k, (start + a + len) % nj, first, last)) len++;
-    if (len && patch_gap(s, k, j, len)) {
+  const int32_t *cols = s->wpatch + 2 * sd->next, *off = cols + sd->next;
+  int np, p;
+  memset(sd->acted, 0, (size_t)(last - first + 1) * sd->next);
+  np = patch_find(s, k, first, last, patch_touch);
+  for (p = 0; p < np; p++) {
+    const int32_t *c = cols + off[p];
+    int len = off[p + 1] - off[p];
+    if (patch_gap(s, k, c, len)) {
       int32_t f = -1;
-      while ((f = patch_next_field(s, k, j, len, first, last, f)) >= 0)
-        patch_field(s, k, j, len, first, last, f);
-      a += len;
-    } else a++;
+      while ((f = patch_next_field(s, k, c, len, first, last, f)) >= 0)
+        patch_field(s, k, c, len, first, last, f);
+    }
   }
   if (s->gap_check) patch_deep(s, k, first, last);
 }
@@ -511,11 +578,11 @@ void boundary_apply(sim *s) {
 /* the patch rule's normal part on the velocities a (sa at slots): per
 ** field, the mass-weighted mean normal velocity of the patch's nodes is
 ** brought to the wall's v where it approaches */
-static void patch_normal(sim *s, int k, int j0, int len, int first, int last,
-                         int32_t f, double *const a[DIM],
+static void patch_normal(sim *s, int k, const int32_t *cols, int len,
+                         int first, int last, int32_t f, double *const a[DIM],
                          double *const sa[DIM], double v) {
   grid *g = &s->g;
-  int d = k / 2, o = 1 - d, pass, i, line;
+  int d = k / 2, pass, i, line;
   double sign = (k & 1) ? 1.0 : -1.0, M = 0, P = 0, dv = 0;
   for (pass = 0; pass < 2; pass++) {
     if (pass == 1) {
@@ -523,9 +590,9 @@ static void patch_normal(sim *s, int k, int j0, int len, int first, int last,
       dv = v - P / M;
     }
     for (i = 0; i < len; i++) {
-      int j = (j0 + i) % g->n[o];
+      size_t j = (size_t)cols[i];
       for (line = first; line <= last; line++) {
-        int32_t n = wall_nodeid(g, d, line, j), sl;
+        int32_t n = grid_face_node(g, d, line, j), sl;
         double m;
         if (!sd_acted(s, k, line - first, j) || !patch_entry(s, n, f, &sl)) continue;
         m = sl < 0 ? g->m[n] : g->sm[sl];
@@ -544,22 +611,17 @@ static void patch_normal(sim *s, int k, int j0, int len, int first, int last,
 
 static void patch_normal_side(sim *s, int k, double *const a[DIM],
                               double *const sa[DIM], double v) {
-  const grid *g = &s->g;
-  int o = 1 - k / 2, nj = g->n[o], first, last, start = 0, i;
-  wall_lines(g, k, &first, &last);
-  if (g->periodic[o]) {
-    for (start = 0; start < nj && col_acted(s, k, start, first, last); start++) {}
-    if (start == nj) start = 0;
-  }
-  for (i = 0; i < nj;) {
-    int len = 0, j = (start + i) % nj;
-    while (i + len < nj && col_acted(s, k, (start + i + len) % nj, first, last)) len++;
-    if (len) {
-      int32_t f = -1;
-      while ((f = patch_next_field(s, k, j, len, first, last, f)) >= 0)
-        patch_normal(s, k, j, len, first, last, f, a, sa, v);
-      i += len;
-    } else i++;
+  const side *sd = &s->sides[k];
+  const int32_t *cols = s->wpatch + 2 * sd->next, *off = cols + sd->next;
+  int first, last, np, p;
+  wall_lines(&s->g, k, &first, &last);
+  np = patch_find(s, k, first, last, col_acted);
+  for (p = 0; p < np; p++) {
+    const int32_t *c = cols + off[p];
+    int len = off[p + 1] - off[p];
+    int32_t f = -1;
+    while ((f = patch_next_field(s, k, c, len, first, last, f)) >= 0)
+      patch_normal(s, k, c, len, first, last, f, a, sa, v);
   }
 }
 
@@ -575,14 +637,15 @@ void boundary_normal_set(sim *s, double *const a[DIM],
   }
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
-    int d = k / 2, o = 1 - d, line, first, last, j;
+    int d = k / 2, line, first, last;
     double v = vel ? sd->v[d] : 0.0;
+    size_t j;
     if (sd->kind != SIDE_WALL) continue;
     wall_lines(g, k, &first, &last);
     for (line = first; line <= last; line++)
-      for (j = 0; j < g->n[o]; j++) {
-        int32_t n = d == 0 ? line + g->n[0] * j : j + g->n[0] * line, sl;
-        if (!sd->acted[(size_t)(line - first) * g->n[o] + j]) continue;
+      for (j = 0; j < sd->next; j++) {
+        int32_t n = grid_face_node(g, d, line, j), sl;
+        if (!sd->acted[(size_t)(line - first) * sd->next + j]) continue;
         a[d][n] = v;
         for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) sa[d][sl] = v;
       }

@@ -17,27 +17,16 @@
 #include "conduct.h"
 #include "heat.h"
 #include "stencil.h"
+#include "vec.h"
 
 #define NARR (6 + DIM) /* C, T, Q, T0, H, HT, A[DIM] */
 
 /* det F of particle i: its volume is J V0 */
 static inline double jac(const particles *ps, size_t i) {
-#if DIM == 2
-  return ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i];
-#else
-  return ps->F[0][i] * (ps->F[4][i] * ps->F[8][i] - ps->F[5][i] * ps->F[7][i]) -
-         ps->F[1][i] * (ps->F[3][i] * ps->F[8][i] - ps->F[5][i] * ps->F[6][i]) +
-         ps->F[2][i] * (ps->F[3][i] * ps->F[7][i] - ps->F[4][i] * ps->F[6][i]);
-#endif
-}
-
-/* node of wall line `line` along d, column j of the other dimension */
-static inline int32_t wall_node(const grid *g, int d, int line, int j) {
-#if DIM == 2
-  return d == 0 ? line + g->n[0] * j : j + g->n[0] * line;
-#else
-#error "conduct.c: the walls' node lines are written for 2-D"
-#endif
+  double F[NTENS];
+  int k;
+  for (k = 0; k < NTENS; k++) F[k] = ps->F[k][i];
+  return vec_det(F);
 }
 
 static double **arrs(heat_state *h, int slot, double **a) {
@@ -302,17 +291,19 @@ static double walls(sim *s, int perfield, double dt) {
   int k;
   for (k = 0; k < NSIDES; k++) {
     const heat_wall *w = &h->walls[k];
-    int d = k / 2, o = 1 - d, first, last, line, j;
+    int d = k / 2, first, last, line, inner;
+    size_t j, nf;
     if (w->kind == HEAT_INSULATED || g->periodic[d]) continue;
-    /* the wall line and the ghost lines; a film also the lines inside
+    /* the wall plane and the ghost planes; a film also the planes inside
     ** whose nodes' support reaches the wall (the pad), so that their
     ** areas add up to the material's face on the wall */
-    int inner = w->kind == HEAT_FILM ? g->pad : 0;
+    inner = w->kind == HEAT_FILM ? g->pad : 0;
+    nf = grid_face_count(g, d);
     if (k & 1) { first = g->pad + g->cells[d] - inner; last = g->n[d] - 1; }
     else { first = 0; last = g->pad + inner; }
     for (line = first; line <= last; line++)
-      for (j = 0; j < g->n[o]; j++) {
-        int32_t n = wall_node(g, d, line, j), sl;
+      for (j = 0; j < nf; j++) {
+        int32_t n = grid_face_node(g, d, line, j), sl;
         if (perfield && g->head[n] >= 0) {
           for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
             in += wall_one(w, k, h->sC, h->sT, h->sA, (size_t)sl, dt);

@@ -64,7 +64,7 @@
 ** turned normals holds a sliding body (measured: a block on a flat body
 ** tilted 30 degrees does not slide with any per-node method).  So the
 ** normal at node n is taken from the sums of every shared node within
-** sim.normal_window = R cells of n (a (2R+1)^2 patch): a smoother density
+** sim.normal_window = R cells of n (a block of (2R+1)^DIM nodes): a smoother density
 ** gradient, or a plane fitted to the particles of a wider window, which
 ** sees the true face over several steps.  R = 0 is the node alone.
 **
@@ -135,39 +135,60 @@ static void moments(const grid *g, int32_t j, int32_t f, const double dl[DIM],
   }
 }
 
+/* The window of nodes within R cells of a node, (2R+1)^DIM of them,
+** walked with x fastest (then y, then z) as the sums were always taken:
+** b holds the offset, starting at (-R, ..., -R); win_next steps it and
+** says whether any is left.  win_node is the node at offset b from the
+** node at indices i, wrapped across periodic sides, or -1 beyond a side
+** that is not */
+static void win_first(int b[DIM], int R) {
+  int d;
+  for (d = 0; d < DIM; d++) b[d] = -R;
+}
+static int win_next(int b[DIM], int R) {
+  int d;
+  for (d = 0; d < DIM; d++) {
+    if (++b[d] <= R) return 1;
+    b[d] = -R;
+  }
+  return 0;
+}
+static int32_t win_node(const grid *g, const int i[DIM], const int b[DIM]) {
+  int j[DIM], d;
+  for (d = 0; d < DIM; d++) {
+    j[d] = grid_wrap(g, d, i[d] + b[d]);
+    if (j[d] < 0 || j[d] >= g->n[d]) return -1;
+  }
+  return grid_node(g, j);
+}
+
 /* the window's sums for field f at node n: its gradient (own) and the
 ** others' at the nodes where f has a slot (rest), or, with A, y, the
 ** plane's normal equations over every shared node of the window */
 static void window(const grid *g, double *const a[DIM], int32_t n, int32_t f,
                    int R, double own[DIM], double rest[DIM],
                    double A[NP][NP], double y[NP]) {
-  int32_t ix = n % g->n[0], iy = n / g->n[0];
-  int bx, by, d;
+  int i[DIM], b[DIM], d;
   for (d = 0; d < DIM; d++) own[d] = rest[d] = 0;
-#if DIM == 2
-  for (by = -R; by <= R; by++)
-    for (bx = -R; bx <= R; bx++) {
-      int jx = grid_wrap(g, 0, ix + bx), jy = grid_wrap(g, 1, iy + by);
-      int32_t j, q;
-      if (jx < 0 || jx >= g->n[0] || jy < 0 || jy >= g->n[1]) continue;
-      j = jx + g->n[0] * jy;
-      if (g->head[j] < 0) continue;
-      if (A) {
-        const double dl[DIM] = {-bx, -by};
-        moments(g, j, f, dl, A, y);
-        continue;
-      }
-      for (q = g->head[j]; q >= 0 && g->sfield[q] != f; q = g->snext[q]) {}
-      if (q < 0) continue;
-      for (q = g->head[j]; q >= 0; q = g->snext[q])
-        for (d = 0; d < DIM; d++) {
-          if (g->sfield[q] == f) own[d] += a[d][q];
-          else rest[d] += a[d][q];
-        }
+  grid_ijk(g, n, i);
+  win_first(b, R);
+  do {
+    int32_t j = win_node(g, i, b), q;
+    if (j < 0 || g->head[j] < 0) continue;
+    if (A) {
+      double dl[DIM];
+      for (d = 0; d < DIM; d++) dl[d] = -b[d];
+      moments(g, j, f, dl, A, y);
+      continue;
     }
-#else
-#error "contact normals: 3-D window not written yet"
-#endif
+    for (q = g->head[j]; q >= 0 && g->sfield[q] != f; q = g->snext[q]) {}
+    if (q < 0) continue;
+    for (q = g->head[j]; q >= 0; q = g->snext[q])
+      for (d = 0; d < DIM; d++) {
+        if (g->sfield[q] == f) own[d] += a[d][q];
+        else rest[d] += a[d][q];
+      }
+  } while (win_next(b, R));
 }
 
 /* Normals of the shared nodes [k0, k1): each node reads the window's
@@ -315,59 +336,59 @@ static double normal_stress(const grid *g, int32_t j, int32_t q, int drv) {
 #define FIT_PATCH 3
 #define FIT_CROSS 1.5
 
+/* n . T . n of a symmetric tensor T held as grid_sym's upper triangle,
+** its components cs apart from T (the bond fit's sums, bond.c) */
+static double symnn(const double *T, size_t cs, const double n[DIM]) {
+  double r = 0;
+  int a, c;
+  for (a = 0; a < DIM; a++)
+    for (c = a; c < DIM; c++)
+      r += (a == c ? 1 : 2) * T[cs * (size_t)grid_sym(a, c)] * n[a] * n[c];
+  return r;
+}
+
 static int fitted(const sim *s, int32_t n, int32_t sl, int32_t o, double *t) {
   const grid *g = &s->g;
   const double *b = s->bfit;
   size_t N = g->nnodes;
-  int32_t ix = n % g->n[0], iy = n / g->n[0], fr = g->sfield[sl], fo = g->sfield[o];
+  int32_t fr = g->sfield[sl], fo = g->sfield[o];
   double m[2][5] = {{0}}, nn[DIM], A[2], B[2], xs, e2, w0, w1;
-  int a, c, k;
+  int a, k, i[DIM], off[DIM];
   for (a = 0; a < DIM; a++) nn[a] = g->sn[a][sl];
-#if DIM == 2
-  for (c = -FIT_PATCH; c <= FIT_PATCH; c++)
-    for (a = -FIT_PATCH; a <= FIT_PATCH; a++) {
-      int jx = grid_wrap(g, 0, ix + a), jy = grid_wrap(g, 1, iy + c), sd;
-      int32_t j;
-      double dl[DIM], w, W, xi0, tau, u[DIM], uu[3], S[3], su[3][DIM];
-      double snn, sxi, uxi, xx;
-      if (jx < 0 || jx >= g->n[0] || jy < 0 || jy >= g->n[1]) continue;
-      j = jx + g->n[0] * jy;
-      W = b[BF_W * N + j];
-      if (g->head[j] >= 0 || !(W > 0)) continue;
-      if (s->bffield[j] == fr) sd = 0;
-      else if (s->bffield[j] == fo) sd = 1;
-      else continue;
-      dl[0] = a;
-      dl[1] = c;
-      xi0 = dl[0] * nn[0] + dl[1] * nn[1];
-      tau = dl[1] * nn[0] - dl[0] * nn[1];
-      w = 1 - fabs(tau) / 1.5;
-      if (!(w > 0)) continue;
-      for (k = 0; k < DIM; k++) u[k] = b[(BF_U + k) * N + j];
-      for (k = 0; k < 3; k++) {
-        uu[k] = b[(BF_UU + k) * N + j];
-        S[k] = b[(BF_S + k) * N + j];
-        su[k][0] = b[(BF_SU + k * DIM) * N + j];
-        su[k][1] = b[(BF_SU + k * DIM + 1) * N + j];
-      }
-      /* about node j: sum w xi_j, sum w xi_j^2, sum w s_nn, sum w s_nn xi_j */
-      uxi = u[0] * nn[0] + u[1] * nn[1];
-      xx = uu[0] * nn[0] * nn[0] + 2 * uu[1] * nn[0] * nn[1] + uu[2] * nn[1] * nn[1];
-      snn = S[0] * nn[0] * nn[0] + 2 * S[1] * nn[0] * nn[1] + S[2] * nn[1] * nn[1];
-      sxi = 0;
-      for (k = 0; k < DIM; k++)
-        sxi += nn[k] * (su[0][k] * nn[0] * nn[0] + 2 * su[1][k] * nn[0] * nn[1] +
-                        su[2][k] * nn[1] * nn[1]);
-      /* moved to node n: xi = xi_j + xi0 */
-      m[sd][0] += w * W;
-      m[sd][1] += w * (uxi + W * xi0);
-      m[sd][2] += w * (xx + 2 * xi0 * uxi + W * xi0 * xi0);
-      m[sd][3] += w * snn;
-      m[sd][4] += w * (sxi + xi0 * snn);
-    }
-#else
-#error "contact fitted: 3-D not written yet"
-#endif
+  grid_ijk(g, n, i);
+  win_first(off, FIT_PATCH);
+  /* the strip is, in 3-D, the rod of nodes within 1.5 cells of the line
+  ** along n_r through node n, weighted by the same falloff */
+  do {
+    int32_t j = win_node(g, i, off);
+    int sd;
+    double dl[DIM], w, W, xi0, tau, u[DIM], snn, sxi, uxi, xx;
+    if (j < 0) continue;
+    W = b[BF_W * N + j];
+    if (g->head[j] >= 0 || !(W > 0)) continue;
+    if (s->bffield[j] == fr) sd = 0;
+    else if (s->bffield[j] == fo) sd = 1;
+    else continue;
+    for (a = 0; a < DIM; a++) dl[a] = off[a];
+    xi0 = vec_dot(dl, nn);
+    tau = vec_crossnorm(dl, nn);
+    w = 1 - tau / 1.5;
+    if (!(w > 0)) continue;
+    for (k = 0; k < DIM; k++) u[k] = b[(BF_U + k) * N + j];
+    /* about node j: sum w xi_j, sum w xi_j^2, sum w s_nn, sum w s_nn xi_j */
+    uxi = vec_dot(u, nn);
+    xx = symnn(b + BF_UU * N + j, N, nn);
+    snn = symnn(b + BF_S * N + j, N, nn);
+    sxi = 0;
+    for (k = 0; k < DIM; k++)
+      sxi += nn[k] * symnn(b + (BF_SU + k) * N + j, DIM * N, nn);
+    /* moved to node n: xi = xi_j + xi0 */
+    m[sd][0] += w * W;
+    m[sd][1] += w * (uxi + W * xi0);
+    m[sd][2] += w * (xx + 2 * xi0 * uxi + W * xi0 * xi0);
+    m[sd][3] += w * snn;
+    m[sd][4] += w * (sxi + xi0 * snn);
+  } while (win_next(off, FIT_PATCH));
   for (k = 0; k < 2; k++) {
     double det = m[k][0] * m[k][2] - m[k][1] * m[k][1];
     /* a line needs weight spread over a cell at least */
@@ -432,41 +453,35 @@ static void fits_part(void *arg, int t, int nparts) {
 ** balance -f_r . n is what the drive transmits; it is kept there.
 **
 ** Why a patch: a single node's mixture still carries the scatter of the
-** cut cells' stresses; 5 x 5 nodes keep the strength local to two
+** cut cells' stresses; 5 x 5 nodes (5^3 in 3-D) keep the strength local to two
 ** cells. */
 #define BOND_PATCH 2
 #define BOND_PATCH_MAX 16
 
 static double traction(const sim *s, int32_t n, int32_t sl, int drv) {
   const grid *g = &s->g;
-  int32_t f = g->sfield[sl], ix = n % g->n[0], iy = n / g->n[0];
+  int32_t f = g->sfield[sl];
   double F = 0, A = 0;
-  int a, b, R = BOND_PATCH, fit = s->bond_fit && !drv;
+  int i[DIM], off[DIM], R = BOND_PATCH, fit = s->bond_fit && !drv;
   if (fit && s->bond_length * g->inv_h > R)
     R = s->bond_length * g->inv_h < BOND_PATCH_MAX
             ? (int)ceil(s->bond_length * g->inv_h - 1e-9) : BOND_PATCH_MAX;
-#if DIM == 2
-  for (b = -R; b <= R; b++)
-    for (a = -R; a <= R; a++) {
-      int jx = grid_wrap(g, 0, ix + a), jy = grid_wrap(g, 1, iy + b);
-      int32_t j, q;
-      double aq;
-      if (jx < 0 || jx >= g->n[0] || jy < 0 || jy >= g->n[1]) continue;
-      j = jx + g->n[0] * jy;
-      if (g->head[j] < 0) continue;
-      for (q = g->head[j]; q >= 0 && g->sfield[q] != f; q = g->snext[q]) {}
-      /* only the interface still bonded: a debonded node's traction is
-      ** no load the bond carries, and counting it would pass its
-      ** release on to the neighbours at once, two cells per step */
-      if (q < 0 || !(g->m[j] > 0) || !(g->sb[q] > 0)) continue;
-      aq = area(g, q);
-      F += drv ? bondforce(g, j, q, drv)
-               : aq * (fit && g->sfok[q] ? g->sft[q] : normal_stress(g, j, q, drv));
-      A += aq;
-    }
-#else
-#error "contact traction: 3-D not written yet"
-#endif
+  grid_ijk(g, n, i);
+  win_first(off, R);
+  do {
+    int32_t j = win_node(g, i, off), q;
+    double aq;
+    if (j < 0 || g->head[j] < 0) continue;
+    for (q = g->head[j]; q >= 0 && g->sfield[q] != f; q = g->snext[q]) {}
+    /* only the interface still bonded: a debonded node's traction is
+    ** no load the bond carries, and counting it would pass its
+    ** release on to the neighbours at once, two cells per step */
+    if (q < 0 || !(g->m[j] > 0) || !(g->sb[q] > 0)) continue;
+    aq = area(g, q);
+    F += drv ? bondforce(g, j, q, drv)
+             : aq * (fit && g->sfok[q] ? g->sft[q] : normal_stress(g, j, q, drv));
+    A += aq;
+  } while (win_next(off, R));
   return A > 0 ? F / A : 0;
 }
 

@@ -1,8 +1,11 @@
 /*
 ** diag.c - per-body diagnostics.  The spin is the rigid-body fit
-**   omega = L_c / I_c,  L_c = sum m (r x v),  I_c = sum m (|r|^2 + a^2/6)
-** with r relative to the centroid and a the particle's side, so a
-** seeded disc's I_c matches the continuum m R^2 / 2 closely.
+**   I_c omega = L_c,  L_c = sum m (r x v),
+**   I_c = sum m ((|r|^2 + a^2/6) 1 - r r^T)
+** with r relative to the centroid and a the particle's side (a^2/6 is a
+** square's polar moment per mass, and a cube's about each axis), so a
+** seeded disc's I_c matches the continuum m R^2 / 2 closely.  In 2-D
+** only the z components exist: omega_z = L_z / I_zz.
 */
 #include <stdlib.h>
 #include <string.h>
@@ -60,13 +63,18 @@ int diag_bodies(const sim *s, bdiag *out) {
   free(ref);
   for (i = 0; i < ps->n; i++) {
     bdiag *o = &out[ps->body[i]];
-    double m = ps->m[i];
-    double rx = rel(s, 0, ps->x[0][i], o->x[0]), ry = rel(s, 1, ps->x[1][i], o->x[1]);
-    double ux = ps->v[0][i] - o->v[0], uy = ps->v[1][i] - o->v[1];
-    o->angmom += m * (rx * uy - ry * ux);
-    o->inertia += m * (rx * rx + ry * ry + a * a / 6.0);
+    double m = ps->m[i], r[3] = {0, 0, 0}, u[DIM], r2;
+    int e;
+    for (d = 0; d < DIM; d++) {
+      r[d] = rel(s, d, ps->x[d][i], o->x[d]);
+      u[d] = ps->v[d][i] - o->v[d];
+    }
+    vec_moment(o->angmom, m, r, u);
+    r2 = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    for (d = 0; d < 3; d++)
+      for (e = 0; e < 3; e++)
+        o->inertia[d][e] += m * ((d == e ? r2 + a * a / 6.0 : 0.0) - r[d] * r[e]);
   }
-  for (b = 0; b < s->nbody; b++)
-    if (out[b].inertia > 0) out[b].omega = out[b].angmom / out[b].inertia;
+  for (b = 0; b < s->nbody; b++) vec_spin(out[b].inertia, out[b].angmom, out[b].omega);
   return 0;
 }

@@ -13,10 +13,12 @@ typedef struct bdiag {
   double mass;
   double x[DIM];   /* centroid */
   double v[DIM];   /* centre-of-mass velocity */
-  double omega;    /* angular velocity about the centroid (2-D) */
-  double inertia;  /* polar moment about the centroid, particle squares
-                      included */
-  double angmom;   /* about the centroid */
+  /* rotation about the centroid, as vectors of 3 (2-D: only z, [2]) */
+  double omega[3];      /* angular velocity, I omega = angmom */
+  double inertia[3][3]; /* inertia tensor, the particles' own squares
+                           (cubes) included; 2-D: [2][2] is the polar
+                           moment (the in-plane rows a lamina's) */
+  double angmom[3];     /* angular momentum */
   double kinetic, strain;
 } bdiag;
 

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "diag_hotspot.h"
+#include "vec.h"
 
 static size_t uf_root(size_t *up, size_t i) {
   while (up[i] != i) {
@@ -27,13 +28,12 @@ static void uf_join(size_t *up, size_t a, size_t b) {
 }
 
 /* the particle's current volume: vol0 det F (the in-plane determinant
-** in 2-D, plane strain) */
+** in 2-D, plane strain: an area) */
 static double volume(const particles *ps, size_t i) {
-#if DIM == 2
-  return ps->vol0[i] * (ps->F[0][i] * ps->F[3][i] - ps->F[1][i] * ps->F[2][i]);
-#else
-#error "diag_hotspot.c: the 3-D volume is not written"
-#endif
+  double F[NTENS];
+  int k;
+  for (k = 0; k < NTENS; k++) F[k] = ps->F[k][i];
+  return ps->vol0[i] * vec_det(F);
 }
 
 static int bycmp(const void *x, const void *y) {

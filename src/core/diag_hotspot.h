@@ -7,7 +7,9 @@
 ** of the seeding (h / ppc) and is 1.5 by default, so on the seeded
 ** lattice a particle links to its 8 neighbours (side 1, diagonal 1.41)
 ** and a one-particle gap of cold material (distance 2) separates two hot
-** spots.  The search bins the hot particles in squares of side link and
+** spots (in 3-D: its 18 face and edge neighbours, not the corners at
+** 1.73).  The search bins the hot particles in squares (3-D: cubes) of
+** side link and
 ** looks at the neighbouring bins: O(hot particles).  Links do not cross
 ** periodic sides (a hot spot cut by one is counted as two).
 **
@@ -22,7 +24,8 @@
 
 typedef struct hotspot {
   size_t n;        /* particles */
-  double area;     /* sum of the particles' current volumes (2-D: area) */
+  double area;     /* sum of the particles' current volumes (2-D: an
+                      area, 3-D: a volume) */
   double mass;
   double Tmax, Tmean; /* peak and mass-weighted mean temperature */
   double x[DIM];   /* mass centroid */

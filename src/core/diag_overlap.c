@@ -53,30 +53,34 @@ static void holders(const sim *s, const size_t *start, const size_t *order,
   }
 }
 
-/* is every cell of the ring at Chebyshev distance r around (i, j) held by
-** body h?  Cells beyond a side that is not periodic are held by none */
-static int ring_held(const grid *g, const int32_t *hold, int i, int j,
+/* is every cell of the ring at Chebyshev distance r around cell c held
+** by body h?  Cells beyond a side that is not periodic are held by none.
+** The block's offsets o run over [-r, r]^DIM, x fastest; the ring is
+** those with some |o_d| = r */
+static int ring_held(const grid *g, const int32_t *hold, const int c[DIM],
                      int r, int32_t h) {
-  int a, b;
-#if DIM == 2
-  for (b = -r; b <= r; b++)
-    for (a = -r; a <= r; a++) {
-      int x = i + a, y = j + b;
-      if (a != -r && a != r && b != -r && b != r) continue;
-      if (x < 0 || x >= g->cells[0]) {
-        if (!g->periodic[0]) return 0;
-        x = ((x % g->cells[0]) + g->cells[0]) % g->cells[0];
+  int o[DIM], d;
+  for (d = 0; d < DIM; d++) o[d] = -r;
+  for (;;) {
+    long cell = 0, stride = 1;
+    int edge = 0;
+    for (d = 0; d < DIM; d++) edge |= o[d] == -r || o[d] == r;
+    for (d = 0; d < DIM && edge; d++) {
+      int x = c[d] + o[d];
+      if (x < 0 || x >= g->cells[d]) {
+        if (!g->periodic[d]) return 0;
+        x = ((x % g->cells[d]) + g->cells[d]) % g->cells[d];
       }
-      if (y < 0 || y >= g->cells[1]) {
-        if (!g->periodic[1]) return 0;
-        y = ((y % g->cells[1]) + g->cells[1]) % g->cells[1];
-      }
-      if (hold[x + (long)g->cells[0] * y] != h) return 0;
+      cell += stride * x;
+      stride *= g->cells[d];
     }
-#else
-#error "diag_overlap: 3-D not written yet"
-#endif
-  return 1;
+    if (edge && hold[cell] != h) return 0;
+    for (d = 0; d < DIM; d++) {
+      if (++o[d] <= r) break;
+      o[d] = -r;
+    }
+    if (d == DIM) return 1;
+  }
 }
 
 int diag_overlap(const sim *s, int maxdepth, overlap_info *out) {
@@ -113,11 +117,14 @@ int diag_overlap(const sim *s, int maxdepth, overlap_info *out) {
   holders(s, start, order, ncell, hold);
   for (i = 0; i < ps->n; i++) {
     int32_t h, a = ps->body[i];
-    int ci, cj, r;
+    int ci[DIM], r;
+    long rest;
     if (cellof[i] < 0 || (h = hold[cellof[i]]) < 0 || h == a) continue;
-    ci = (int)(cellof[i] % g->cells[0]);
-    cj = (int)(cellof[i] / g->cells[0]);
-    for (r = 1; r <= maxdepth && ring_held(g, hold, ci, cj, r, h); r++) {}
+    for (rest = cellof[i], d = 0; d < DIM; d++) {
+      ci[d] = (int)(rest % g->cells[d]);
+      rest /= g->cells[d];
+    }
+    for (r = 1; r <= maxdepth && ring_held(g, hold, ci, r, h); r++) {}
     if (r == 1) continue;   /* within a cell of the surface: contact */
     out->n++;
     if (r - 1 > out->depth) {

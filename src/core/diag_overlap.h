@@ -4,7 +4,7 @@
 **
 ** A cell is held by the body with the most particles in it (a tie: by
 ** none).  A particle of body a lies inside body b by k cells when every
-** cell within k cells of its own (the (2k+1)^2 block, across periodic
+** cell within k cells of its own (the (2k+1)^DIM block, across periodic
 ** sides) is held by b != a.  Contact on the grid acts once two bodies
 ** share nodes, so surfaces a cell apart already touch: depth 0 is
 ** ordinary contact, depth >= 1 is a particle buried in another body

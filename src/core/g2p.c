@@ -77,7 +77,7 @@ double g2p_affine_energy(const sim *s) {
 
 /* the sums of one chunk of particles (par.h), kept in s->red */
 typedef struct sums {
-  double ke, mom[DIM], am[NANG], v2max, pe, loss;
+  double ke, mom[DIM], am[3], v2max, pe, loss;
   size_t out;
 } sums;
 _Static_assert(sizeof(sums) <= SIM_RED_BYTES, "sums fit SIM_RED_BYTES");
@@ -103,7 +103,7 @@ STENCIL_INLINE void box_init(box *bx, const grid *g, const double *grav) {
 
 /* after the move: wrap, domain check, cell, sums */
 STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
-  double m = ps->m[i], v2 = 0, xs[DIM], vs[DIM];
+  double m = ps->m[i], v2 = 0;
   int32_t cell = 0, stride = 1;
   int d;
   for (d = 0; d < DIM; d++) {
@@ -120,8 +120,6 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
     if (!(x >= bx->lo[d] && x < bx->hi[d] && r < bx->cells[d])) cell = -1;
     else if (cell >= 0) cell += stride * (int32_t)r;
     stride *= bx->cells[d];
-    xs[d] = x;
-    vs[d] = ps->v[d][i];
     v2 += ps->v[d][i] * ps->v[d][i];
     u->mom[d] += m * ps->v[d][i];
     u->pe -= m * bx->grav[d] * x;
@@ -130,7 +128,11 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
   ps->cell[i] = cell;
   u->ke += 0.5 * m * v2;
   if (v2 > u->v2max) u->v2max = v2;
-  vec_moment(u->am, m, xs, vs);
+  {
+    double x[DIM], v[DIM];
+    for (d = 0; d < DIM; d++) { x[d] = ps->x[d][i]; v[d] = ps->v[d][i]; }
+    vec_moment(u->am, m, x, v);
+  }
 }
 
 /* what a g2p pass does besides the gather: move the particles (USL),
@@ -407,7 +409,7 @@ static void finish(sim *s) {
   for (c = 0; c < nc; c++) {
     u.ke += red[c].ke;
     for (d = 0; d < DIM; d++) u.mom[d] += red[c].mom[d];
-    for (d = 0; d < NANG; d++) u.am[d] += red[c].am[d];
+    for (d = 0; d < 3; d++) u.am[d] += red[c].am[d];
     u.pe += red[c].pe;
     u.out += red[c].out;
     u.loss += red[c].loss;
@@ -416,7 +418,7 @@ static void finish(sim *s) {
   s->e.kinetic = u.ke;
   s->e.potential = u.pe;
   for (d = 0; d < DIM; d++) s->e.mom[d] = u.mom[d];
-  s->e.angmom = u.am[0];
+  for (d = 0; d < 3; d++) s->e.angmom[d] = u.am[d];
   s->vmax = sqrt(u.v2max);
   s->nout = u.out;
   s->e.transfer += u.loss;

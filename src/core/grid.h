@@ -148,6 +148,15 @@ static inline int32_t grid_face_node(const grid *g, int d, int line,
   }
   return grid_node(g, i);
 }
+/* the column of the node with indices i in its plane i_d: the j that
+** grid_face_node(g, d, i[d], j) takes to give it back */
+static inline size_t grid_face_index(const grid *g, int d, const int i[DIM]) {
+  size_t j = 0;
+  int e;
+  for (e = DIM - 1; e >= 0; e--)
+    if (e != d) j = j * (size_t)g->n[e] + (size_t)i[e];
+  return j;
+}
 /* physical coordinate of stored node index i along d */
 static inline double grid_x(const grid *g, int d, int i) {
   return g->lo[d] + (i - (g->periodic[d] ? 0 : g->pad)) * g->h;

@@ -86,38 +86,59 @@ STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
   stencil_geo geo;
   stencil_geo_init(&geo, g);
   for (i = i0; i < i1; i++) {
-    int32_t f = bd[ps->body[i]].field, ix[SHAPE_MAXW], n0;
-    int fx = stencil_first(&geo, kind, 0, ps->x[0][i]);
-    int fy = stencil_first(&geo, kind, 1, ps->x[1][i]);
-    int a, c;
-    for (a = 0; a < nw; a++) ix[a] = stencil_wrap(&geo, 0, fx + a);
-    n0 = ix[0] + geo.n[0] * stencil_wrap(&geo, 1, fy);
+    int32_t f = bd[ps->body[i]].field, ix[DIM][SHAPE_MAXW], n0;
+    int first[DIM], c, d;
+    /* the stencil's node indices along each axis, wrapped */
+    for (d = 0; d < DIM; d++) {
+      int a;
+      first[d] = stencil_first(&geo, kind, d, ps->x[d][i]);
+      for (a = 0; a < nw; a++) ix[d][a] = stencil_wrap(&geo, d, first[d] + a);
+    }
+    {
+      int i0n[DIM];
+      for (d = 0; d < DIM; d++) i0n[d] = ix[d][0];
+      n0 = grid_node(g, i0n);
+    }
     if (n0 == last && f == lastf) continue;
     last = n0;
     lastf = f;
     if (split && !bands_rows(&s->bands, &geo, kind, ps->x[BANDS_DIM][i], t,
                              pass, mine))
       continue;
+    /* rows along BANDS_DIM (the last axis) outermost, x innermost: k
+    ** counts the stencil's nodes in this order */
     for (c = 0; c < nw; c++) {
-      int32_t row;
+      int r, nmid = 1, in[DIM];
       if (split && !mine[c]) continue;
-      row = geo.n[0] * stencil_wrap(&geo, 1, fy + c);
-      for (a = 0; a < nw; a++) {
-        int32_t n = ix[a] + row, o = owner[n], m;
-        if (o == f) continue;
-        if (o < 0) { owner[n] = f; continue; }
-        for (m = head[n]; m >= 0 && mf[m] != f; m = mn[m]) {}
-        if (m >= 0) continue;
-        if (used == cap) { mk->full[t] = 1; goto out; }
-        m = (int32_t)(base + used++);
-        mf[m] = f;
-        if (head[n] < 0) { /* the node becomes shared here */
-          mk->key[base + nev] = (uint64_t)i * STENCIL_MAX + (uint64_t)(c * nw + a);
-          mk->node[base + nev] = n;
-          nev++;
+      for (d = 1; d < DIM - 1; d++) nmid *= nw;
+      in[DIM - 1] = ix[DIM - 1][c];
+      for (r = 0; r < nmid; r++) {
+        int a, rr = r;
+        for (d = 1; d < DIM - 1; d++) {
+          in[d] = ix[d][rr % nw];
+          rr /= nw;
         }
-        mn[m] = head[n];
-        head[n] = m;
+        for (a = 0; a < nw; a++) {
+          int32_t n, o, m;
+          in[0] = ix[0][a];
+          n = grid_node(g, in);
+          o = owner[n];
+          if (o == f) continue;
+          if (o < 0) { owner[n] = f; continue; }
+          for (m = head[n]; m >= 0 && mf[m] != f; m = mn[m]) {}
+          if (m >= 0) continue;
+          if (used == cap) { mk->full[t] = 1; goto out; }
+          m = (int32_t)(base + used++);
+          mf[m] = f;
+          if (head[n] < 0) { /* the node becomes shared here */
+            mk->key[base + nev] =
+                (uint64_t)i * STENCIL_MAX + (uint64_t)((c * nmid + r) * nw + a);
+            mk->node[base + nev] = n;
+            nev++;
+          }
+          mn[m] = head[n];
+          head[n] = m;
+        }
       }
     }
   }

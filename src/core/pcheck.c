@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pcheck.h"
+#include "vec.h"
 
 /* one failure: the dataset, its component, the row, the value, the range */
 static int bad(char *err, size_t errlen, const char *path, const pfield *f,
@@ -52,14 +53,10 @@ static int reals(const char *path, const particles *ps, const pfield *f,
 }
 
 static double det(const particles *ps, size_t i) {
-  double *const *F = ps->F;
-#if DIM == 2
-  return F[0][i] * F[3][i] - F[1][i] * F[2][i];
-#else
-  return F[0][i] * (F[4][i] * F[8][i] - F[5][i] * F[7][i]) -
-         F[1][i] * (F[3][i] * F[8][i] - F[5][i] * F[6][i]) +
-         F[2][i] * (F[3][i] * F[7][i] - F[4][i] * F[6][i]);
-#endif
+  double F[NTENS];
+  int k;
+  for (k = 0; k < NTENS; k++) F[k] = ps->F[k][i];
+  return vec_det(F);
 }
 
 static int field_read(const particles *ps, const char *name) {

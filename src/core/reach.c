@@ -13,30 +13,49 @@
 #include "sim.h"
 #include "stencil.h"
 
-/* particle i's reach toward the walls, into ext (one array per side) */
+/* particle i's reach toward the walls, into ext (one array per side,
+** per column of the wall plane): every column whose node the particle's
+** stencil reaches along the plane's axes */
 static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
   const grid *g = &s->g;
   const particles *ps = &s->ps;
   const double l = s->lp * g->h;
+  const int nw = shape_width(s->shape);
   int k;
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
-    int d = k / 2, hi = k & 1, o = 1 - d; /* o: the other dimension (2-D) */
-    double xw, r, xi;
-    int i0, a, nw;
+    int d = k / 2, hi = k & 1, e, a, i0[DIM], t[DIM], cnt = 1;
+    double xw, r;
     if (sd->kind != SIDE_WALL) continue;
     xw = hi ? g->hi[d] : g->lo[d];
     r = (hi ? ps->x[d][i] - xw : xw - ps->x[d][i]) + l;
     if (r < -1.5 * g->h) continue; /* not near this wall */
-    /* wall nodes along the other dimension this particle touches */
-    xi = (ps->x[o][i] - g->lo[o]) * g->inv_h + (g->periodic[o] ? 0 : g->pad);
-    nw = shape_width(s->shape);
-    i0 = s->shape == SHAPE_LINEAR ? (int)floor(xi)
-         : s->shape == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
-                                  : (int)floor(xi - 0.5);
-    for (a = 0; a < nw; a++) {
-      int j = grid_wrap(g, o, i0 + a);
-      if (j >= 0 && (size_t)j < sd->next && r > ext[k][j]) ext[k][j] = r;
+    /* the first stencil node along each axis of the plane */
+    for (e = 0; e < DIM; e++) {
+      double xi;
+      t[e] = 0;
+      i0[e] = 0;
+      if (e == d) continue;
+      xi = (ps->x[e][i] - g->lo[e]) * g->inv_h + (g->periodic[e] ? 0 : g->pad);
+      i0[e] = s->shape == SHAPE_LINEAR ? (int)floor(xi)
+              : s->shape == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
+                                       : (int)floor(xi - 0.5);
+      cnt *= nw;
+    }
+    for (a = 0; a < cnt; a++) { /* the nw^(DIM-1) columns, x fastest */
+      int ix[DIM], in = 1, c = a;
+      for (e = 0; e < DIM; e++) {
+        ix[e] = 0;
+        if (e == d) continue;
+        t[e] = c % nw;
+        c /= nw;
+        ix[e] = grid_wrap(g, e, i0[e] + t[e]);
+        in &= ix[e] >= 0 && ix[e] < g->n[e];
+      }
+      if (in) {
+        size_t j = grid_face_index(g, d, ix);
+        if (r > ext[k][j]) ext[k][j] = r;
+      }
     }
   }
 }
@@ -56,13 +75,14 @@ static void shared(sim *s, size_t i, int blk, int pass) {
   for (k = 0; k < nn; k++) {
     int32_t n = node[k], sl;
     double e = 0, nrm1 = 0;
+    int ix[DIM];
     if (g->head[n] < 0) continue;
-    if (blk >= 0 && (b->first[n / g->n[0]] == blk) != (pass == 1)) continue;
+    grid_ijk(g, n, ix);
+    if (blk >= 0 && (b->first[ix[BANDS_DIM]] == blk) != (pass == 1)) continue;
     sl = grid_slot(g, n, s->bodies[ps->body[i]].field);
     for (d = 0; d < DIM; d++) {
       /* node position on the particle's side of any periodic seam */
-      int id = d == 0 ? n % g->n[0] : n / g->n[0];
-      double xn = grid_x(g, d, id);
+      double xn = grid_x(g, d, ix[d]);
       double dx = x[d] - xn;
       if (g->periodic[d]) {
         double L = g->hi[d] - g->lo[d];

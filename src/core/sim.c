@@ -17,6 +17,7 @@
 int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
              const int periodic[DIM], int shape, int ppc) {
   int k, d;
+  size_t most = 0;
   memset(s, 0, sizeof *s);
   s->shape = shape;
   s->update = UPDATE_MUSL;
@@ -51,13 +52,16 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   for (k = 0; k < NSIDES; k++) {
     d = k / 2;
     s->sides[k].kind = periodic[d] ? SIDE_PERIODIC : SIDE_WALL;
-    s->sides[k].next = (size_t)s->g.n[1 - d];
+    s->sides[k].next = grid_face_count(&s->g, d);
+    if (s->sides[k].next > most) most = s->sides[k].next;
     s->sides[k].ext = malloc(s->sides[k].next * sizeof(double));
-    /* the wall line and the ghost lines beyond it */
+    /* the wall plane and the ghost planes beyond it */
     s->sides[k].acted = calloc((size_t)(s->g.pad + 1) * s->sides[k].next, 1);
     s->sides[k].hm = calloc((size_t)(s->g.pad + 2) * s->sides[k].next, sizeof(double));
     if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm) return -1;
   }
+  s->wpatch = malloc((4 * most + 1) * sizeof *s->wpatch);
+  if (!s->wpatch) return -1;
   return 0;
 }
 
@@ -81,6 +85,7 @@ void sim_free(sim *s) {
   marks_free(&s->marks);
   free(s->red);
   free(s->wext);
+  free(s->wpatch);
   free(s->crec);
   free(s->cbody);
   free(s->bfit);
@@ -304,10 +309,10 @@ void sim_measure(sim *s) {
   const particles *ps = &s->ps;
   size_t i;
   int d;
-  double ke = 0, se = 0, am[NANG] = {0}, v2max = 0, pe = 0;
+  double ke = 0, se = 0, am[3] = {0, 0, 0}, v2max = 0, pe = 0;
   for (d = 0; d < DIM; d++) s->e.mom[d] = 0;
   for (i = 0; i < ps->n; i++) {
-    double v2 = 0, x[DIM], v[DIM];
+    double v2 = 0;
     int32_t mi = s->bmat[ps->body[i]];
     for (d = 0; d < DIM; d++) {
       v2 += ps->v[d][i] * ps->v[d][i];
@@ -317,13 +322,16 @@ void sim_measure(sim *s) {
     if (v2 > v2max) v2max = v2;
     ke += 0.5 * ps->m[i] * v2;
     if (mi >= 0) se += s->mats[mi].model->energy(&s->mats[mi], ps, i);
-    for (d = 0; d < DIM; d++) { x[d] = ps->x[d][i]; v[d] = ps->v[d][i]; }
-    vec_moment(am, ps->m[i], x, v);
+    {
+      double x[DIM], v[DIM];
+      for (d = 0; d < DIM; d++) { x[d] = ps->x[d][i]; v[d] = ps->v[d][i]; }
+      vec_moment(am, ps->m[i], x, v);
+    }
   }
   s->e.kinetic = ke + g2p_affine_energy(s);
   s->e.strain = se;
   s->e.potential = pe;
-  s->e.angmom = am[0];
+  for (d = 0; d < 3; d++) s->e.angmom[d] = am[d];
   s->vmax = sqrt(v2max);
 }
 

@@ -18,6 +18,7 @@
 #include "material.h"
 #include "particles.h"
 #include "par.h"
+#include "vec.h"
 
 enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
 /* the velocity gradient the stresses are updated with: the updated grid
@@ -53,13 +54,14 @@ typedef struct side {
   int kind;
   double mu;         /* Coulomb friction; INFINITY sticks */
   double v[DIM];     /* wall velocity (tangential part moves the wall) */
-  double *ext;       /* reach of material toward the wall per wall node */
-  size_t next;
-  unsigned char *acted; /* per node of the wall line and the ghost lines:
-                        ** the wall acted there this step */
-  double *hm;        /* patch rule with friction: per node of those lines
-                     ** and the first line inside, sum S m (distance of the
-                     ** particle from the wall line) (boundary.c) */
+  double *ext;       /* reach of material toward the wall per column (node
+                     ** of the wall plane, grid_face_node's order) */
+  size_t next;       /* columns: grid_face_count of the side's axis */
+  unsigned char *acted; /* per column of the wall plane and the ghost
+                        ** planes: the wall acted there this step */
+  double *hm;        /* patch rule with friction: per column of those planes
+                     ** and the first plane inside, sum S m (distance of the
+                     ** particle from the wall plane) (boundary.c) */
   double force[DIM]; /* force the wall put on the material, last step */
 } side;
 
@@ -111,7 +113,8 @@ typedef struct sim_energy {
   double initial;    /* kinetic + strain + potential before the first step */
   double potential0; /* potential before the first step */
   double mom[DIM];
-  double angmom;     /* about the origin (2-D: z component) */
+  double angmom[3];  /* about the origin, sum m x × v (2-D: only the z
+                     ** component, angmom[2]; the others stay 0) */
   double jmin, jmax;
   size_t nbadj;
 } sim_energy;
@@ -200,6 +203,8 @@ typedef struct sim {
   double *wext;      /* reach.c: each thread but the first's copy of the
                         sides' reach arrays, wextn doubles each */
   size_t wextn;
+  int32_t *wpatch;   /* boundary.c: room to find a wall's contact patches
+                        in, 4 x the most columns of a side + 1 */
   /* contact.c's records of a threaded pass, added up in node order after
   ** it: per shared node the driven body's force and work (cbody -1:
   ** none) */

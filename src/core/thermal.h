@@ -12,7 +12,9 @@
 ** the constitutive update and no model needs to know about temperature
 ** (J2 yield and the Maxwell elements depend on the deviator only).  A
 ** free body then expands in plane by (1 + nu) alpha dT; a fully held
-** one is stressed by -3 K alpha dT.
+** one is stressed by -3 K alpha dT.  In 3-D (DIM = 3, no eps_zz = 0)
+** the increment is the same and a free body expands by alpha dT along
+** every axis.
 **
 ** The seeded shape is the stress-free shape at T_ref: a particle that
 ** starts at another temperature T0 starts with the stress of a fully

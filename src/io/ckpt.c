@@ -240,7 +240,8 @@ static void visit_sim(ckv *v, sim *s) {
   vreal_opt(v, "t_ignition", &s->t_ignition, INFINITY);
   vreal_opt(v, "e.potential0", &e->potential0, e->potential);
   vvec(v, "e.", "mom", e->mom, DIM);
-  vreal(v, "e.angmom", &e->angmom);
+  if (DIM == 2) vreal(v, "e.angmom", &e->angmom[2]);
+  else vvec(v, "e.", "angmom", e->angmom, 3);
   vreal(v, "e.jmin", &e->jmin);
   vreal(v, "e.jmax", &e->jmax);
   VI(v, "e.nbadj", e->nbadj, size_t);

@@ -3,11 +3,17 @@
 ** XDMF 2: a temporal collection of polyvertex grids whose arrays live in
 ** the HDF5 snapshots.  A field of one component is a Scalar attribute; a
 ** field whose components are x, y (, z) is a Vector (ParaView's XDMF 2
-** reader pads a 2-D vector with z = 0, which glyphs need); any other
-** field of several components is a Matrix of its (n, ncomp) dataset,
-** one array of ncomp components in the snapshot's order (its
-** "components" attribute: stress xx,yy,xy,zz; F xx,xy,yx,yy).  Tensors
-** here follow neither XDMF's Tensor nor its Tensor6 layout, and a
+** reader pads a 2-D vector with z = 0, which glyphs need); a full 3 x 3
+** tensor stored row by row (F in 3-D: xx,xy,xz,yx,..,zz) is a Tensor,
+** XDMF's own layout; any other field of several components is a Matrix
+** of its (n, ncomp) dataset, one array of ncomp components in the
+** snapshot's order (its "components" attribute: stress xx,yy,xy,zz in
+** 2-D, xx,yy,zz,xy,yz,xz in 3-D; F xx,xy,yx,yy in 2-D).
+** The 3-D stress is not a Tensor6: ParaView's XDMF 2 reader takes a
+** Tensor6 as xx,xy,xz,yy,yz,zz and expands it to 9 components, while its
+** Xdmf3 readers pass the 6 values on as they are, which VTK reads as
+** xx,yy,zz,xy,yz,xz; no one order is right for all three.  The snapshot's
+** order is VTK's own, so as a Matrix every reader shows it right.  A
 ** HyperSlab per component (the other way to name them) is dropped by
 ** ParaView's Xdmf3 readers; a Matrix is read by all three.
 */
@@ -19,15 +25,9 @@
 #include "ofile.h"
 #include "out_xdmf.h"
 
-#if DIM == 2
-#define GEOMETRY "XY"
-#define GEOMSIZE "2"
-#define GEOMZERO "0 0"
-#else
-#define GEOMETRY "XYZ"
-#define GEOMSIZE "3"
-#define GEOMZERO "0 0 0"
-#endif
+/* XDMF's name for DIM coordinates per point */
+static const char *const geometry[] = {"X", "XY", "XYZ"};
+#define GEOMETRY (geometry[DIM - 1])
 
 /* text with the five XML special characters escaped */
 static void xml(FILE *fp, const char *s) {
@@ -57,7 +57,8 @@ static void heavy(FILE *fp, const xdmf_entry *e, const pfield *f,
   fputs("</DataItem>\n", fp);
 }
 
-/* the whole dataset as one attribute: "Scalar", "Vector" or "Matrix" */
+/* the whole dataset as one attribute: "Scalar", "Vector", "Tensor" or
+** "Matrix" */
 static void whole(FILE *fp, const xdmf_entry *e, const pfield *f,
                   const char *type) {
   fputs("    <Attribute Name=\"", fp);
@@ -74,6 +75,17 @@ static int isvector(const pfield *f) {
   if (f->ncomp != DIM) return 0;
   for (c = 0; c < DIM; c++)
     if (!f->comp_names[c] || strcmp(f->comp_names[c], xyz[c]) != 0) return 0;
+  return 1;
+}
+
+/* a full 3 x 3 tensor row by row (xx, xy, xz, yx, .., zz): XDMF's Tensor */
+static int istensor(const pfield *f) {
+  int c;
+  if (f->ncomp != 9 || NTENS != 9) return 0;
+  for (c = 0; c < 9; c++)
+    if (!f->comp_names[c] || !particles_tens_name(c) ||
+        strcmp(f->comp_names[c], particles_tens_name(c)) != 0)
+      return 0;
   return 1;
 }
 
@@ -96,11 +108,14 @@ static void number(FILE *fp, double x) {
 ** is drawn, and the cell count is still the particle count.
 */
 static void nogrid(FILE *fp) {
-  fputs("    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"0\""
-        " NodesPerElement=\"1\"/>\n"
-        "    <Geometry GeometryType=\"" GEOMETRY "\">\n"
-        "     <DataItem Format=\"XML\" NumberType=\"Float\" Precision=\"8\""
-        " Dimensions=\"1 " GEOMSIZE "\">" GEOMZERO "</DataItem>\n"
+  int d;
+  fprintf(fp, "    <Topology TopologyType=\"Polyvertex\" NumberOfElements="
+          "\"0\" NodesPerElement=\"1\"/>\n"
+          "    <Geometry GeometryType=\"%s\">\n"
+          "     <DataItem Format=\"XML\" NumberType=\"Float\" Precision=\"8\""
+          " Dimensions=\"1 %d\">", GEOMETRY, DIM);
+  for (d = 0; d < DIM; d++) fputs(d ? " 0" : "0", fp);
+  fputs("</DataItem>\n"
         "    </Geometry>\n", fp);
 }
 
@@ -123,9 +138,9 @@ static void grid(FILE *fp, const xdmf_entry *e, const particles *ps,
           "     <DataItem Format=\"HDF\" NumberType=\"Int\" Precision=\"4\""
           " Dimensions=\"%zu\">", e->n, e->n);
   xml(fp, e->file);
-  fputs(":/xdmf/vertex</DataItem>\n"
-        "    </Topology>\n"
-        "    <Geometry GeometryType=\"" GEOMETRY "\">\n", fp);
+  fprintf(fp, ":/xdmf/vertex</DataItem>\n"
+          "    </Topology>\n"
+          "    <Geometry GeometryType=\"%s\">\n", GEOMETRY);
   heavy(fp, e, pos, "     ");
   fputs("    </Geometry>\n", fp);
   for (f = 0; f < ps->nfields; f++) {
@@ -133,6 +148,7 @@ static void grid(FILE *fp, const xdmf_entry *e, const particles *ps,
     if (!(pf->flags & PF_OUTPUT) || pf == pos) continue;
     if (pf->ncomp == 1) whole(fp, e, pf, "Scalar");
     else if (isvector(pf)) whole(fp, e, pf, "Vector");
+    else if (istensor(pf)) whole(fp, e, pf, "Tensor");
     else whole(fp, e, pf, "Matrix");
   }
   fputs("   </Grid>\n", fp);

@@ -4,16 +4,17 @@
 ** name + rename) after every snapshot.
 **
 ** XDMF 2.0: one temporal collection, one Polyvertex grid per entry whose
-** Geometry (XY, or XYZ in 3-D) is "file:/position".  Each other PF_OUTPUT
-** field becomes: a Scalar (one component); a Vector (components x, y
-** (, z), padded to 3 by the reader); or one Scalar per component named
-** NAME_COMP ("stress_xx", "F_yx"; NAME_0.. without component names),
-** each a HyperSlab of the (n, ncomp) dataset.  An entry with n == 0 gets
-** one placeholder point and no cells or attributes, as ParaView's XDMF 2
+** connectivity is "file:/xdmf/vertex" and whose Geometry (XY, or XYZ in
+** 3-D) is "file:/position".  Each other PF_OUTPUT field becomes: a
+** Scalar (one component); a Vector (components x, y (, z), padded to 3
+** by the XDMF 2 reader); a Tensor (a 3-D full tensor row by row, F); or
+** else a Matrix, one array of the (n, ncomp) dataset in the snapshot's
+** order (the stress: xx,yy,xy,zz in 2-D, xx,yy,zz,xy,yz,xz in 3-D, which
+** is VTK's order for a symmetric tensor).  An entry with n == 0 gets one
+** placeholder point and no cells or attributes, as ParaView's XDMF 2
 ** reader cannot read empty arrays.
-** Read by ParaView's "XDMFReader" (XDMF 2); the Xdmf3 readers make no
-** cells from a Polyvertex without connectivity and skip HyperSlabs.
-** tests/tools/check_xdmf.py checks a series in ParaView.
+** Read by ParaView's XDMFReader, Xdmf3ReaderS and Xdmf3ReaderT alike;
+** tests/tools/check_xdmf.py checks a series in ParaView with each.
 */
 #ifndef mvmpm_out_xdmf_h
 #define mvmpm_out_xdmf_h

@@ -625,7 +625,20 @@ static int bdiag_(lua_State *L) {
   lua_setfield(L, -2, "omega");
   lsim_push_rot(L, LSIM_COMP(o.angmom), LSIM_NCOMP(o.angmom), 1);
   lua_setfield(L, -2, "angmom");
-  setnum(L, "inertia", o.inertia);
+  if (DIM == 2) setnum(L, "inertia", o.inertia[2][2]);
+  else { /* the inertia tensor about the centroid, row by row */
+    int a, b;
+    lua_createtable(L, 3, 0);
+    for (a = 0; a < 3; a++) {
+      lua_createtable(L, 3, 0);
+      for (b = 0; b < 3; b++) {
+        lua_pushnumber(L, o.inertia[a][b]);
+        lua_rawseti(L, -2, b + 1);
+      }
+      lua_rawseti(L, -2, a + 1);
+    }
+    lua_setfield(L, -2, "inertia");
+  }
   setnum(L, "kinetic", o.kinetic);
   setnum(L, "strain", o.strain);
   lua_pushinteger(L, (lua_Integer)o.n);

@@ -7,7 +7,12 @@
 **              "sdiff" | "speed" | "FIELD[.COMP]", width = 800,
 **              range = {lo, hi} | "robust" | "full", title = "...",
 **              colormap = "auto" | "seq" | "div", log = false,
-**              axes = true, matrix = "NAME"}
+**              axes = true, matrix = "NAME",
+**              3-D: axis = "z" | "x" | "y", at = POS, thick = T,
+**              project = false}
+**   In 3-D the picture looks along axis: a slice at `at` (default the
+**   middle of the domain) or with project = true all the particles
+**   (render_png.h); the window is the domain in the other two axes.
 **   A relative file goes in the run's output directory when it has one
 **   (mvmpm run, or the scene's output{dir = ...}), else in the current
 **   directory.
@@ -108,7 +113,9 @@ static const char *render_path(lua_State *L, lsim *ls, const char *file,
 /* sim:render{...} */
 int lrender_sim(lua_State *L) {
   static const char *const keys[] = {"file", "by", "width", "range", "title",
-      "colormap", "log", "axes", "matrix", NULL};
+      "colormap", "log", "axes", "matrix", "axis", "at", "thick", "project",
+      NULL};
+  static const char *const axisnames[] = {"z", "x", "y", NULL};
   static const char *const autos[] = {"robust", "full", NULL};
   const char *what = "render", *file, *title;
   lsim *ls = lsim_check(L, 1);
@@ -116,7 +123,7 @@ int lrender_sim(lua_State *L) {
   render_opts o;
   char err[2048], deftitle[160], path[1100];
   const char **names;
-  int b, d, *driven;
+  int b, d, *driven, h, u, a;
   luaL_checktype(L, 2, LUA_TTABLE);
   lua_settop(L, 2);
   lsim_hold(L, ls); /* the options table may have metamethods */
@@ -138,14 +145,27 @@ int lrender_sim(lua_State *L) {
   o.noaxes = !chk_bool(L, 2, what, "axes", 1);
   o.matrix = optstr(L, 2, what, "matrix", NULL);
   o.unit = render_length_unit(ls->units);
+  o.axis = axisnames[chk_option(L, 2, what, "axis", 0, axisnames)];
+  if (render_view_axes(o.axis, &h, &u, &a, err, sizeof err))
+    luaL_error(L, "%s: field 'axis': %s", what, err);
+  o.project = chk_bool(L, 2, what, "project", 0);
+  o.thick = chk_num(L, 2, what, "thick", 0, 0, HUGE_VAL, 0);
+  lua_getfield(L, 2, "at");
+  o.has_at = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  if (o.has_at) o.at = chk_num(L, 2, what, "at", 0, -HUGE_VAL, HUGE_VAL, 0);
+  else if (a >= 0) { /* a 3-D slice through the middle of the domain */
+    o.at = s->g.lo[a] / 2 + s->g.hi[a] / 2;
+    o.has_at = 1;
+  }
   if (render_values(&s->ps, o.by, 0, NULL, err, sizeof err) < 0)
     luaL_error(L, "%s: field 'by': %s", what, err);
   snprintf(deftitle, sizeof deftitle, "%s   t = %.6g", o.by, s->t);
   title = optstr(L, 2, what, "title", deftitle);
   o.title = title;
-  for (d = 0; d < 2; d++) {
-    o.lo[d] = s->g.lo[d];
-    o.hi[d] = s->g.hi[d];
+  for (d = 0; d < 2; d++) {  /* the window: h across, u up */
+    o.lo[d] = s->g.lo[d ? u : h];
+    o.hi[d] = s->g.hi[d ? u : h];
   }
   /* names live in the bodies; the array in a userdata Lua will collect */
   names = lua_newuserdatauv(L, (s->nbody ? s->nbody : 1) * sizeof *names, 0);

@@ -10,6 +10,7 @@
 #include "png.h"
 #include "render_png.h"
 #include "svg.h"
+#include "vec.h"
 
 #define INK 0x000000u
 #define BG 0xFFFFFFu
@@ -60,6 +61,33 @@ static int find(const particles *ps, const char *name, unsigned need) {
   return f >= 0 && (ps->fields[f].flags & need) == need ? f : -1;
 }
 
+/*
+** s1 - s3 of the 3-D stress of particle i: the eigenvalues of a
+** symmetric 3 x 3 tensor are q + 2 p cos(phi + 2 pi k / 3) with q its
+** mean and p, phi from the invariants of its deviator, so the largest
+** less the smallest is 2 p (cos(phi) - cos(phi + 2 pi / 3)) =
+** 2 sqrt(3) p sin(phi + pi / 3).  (Not called in 2-D.)
+*/
+static double spread3(const particles *ps, size_t i) {
+  double s[3][3], q, p2 = 0, p, r = 0, phi;
+  int a, b;
+  for (a = 0; a < 3; a++)
+    for (b = 0; b < 3; b++) s[a][b] = ps->s[vec_sym(a % DIM, b % DIM)][i];
+  q = (s[0][0] + s[1][1] + s[2][2]) / 3;
+  for (a = 0; a < 3; a++) s[a][a] -= q;
+  for (a = 0; a < 3; a++)
+    for (b = 0; b < 3; b++) p2 += s[a][b] * s[a][b];
+  p = sqrt(p2 / 6);
+  if (!(p > 0)) return p == 0 ? 0 : NAN;
+  /* det(s / p) / 2 = cos(3 phi), clamped against round-off */
+  r = (s[0][0] * (s[1][1] * s[2][2] - s[1][2] * s[2][1]) -
+       s[0][1] * (s[1][0] * s[2][2] - s[1][2] * s[2][0]) +
+       s[0][2] * (s[1][0] * s[2][1] - s[1][1] * s[2][0])) / (2 * p * p * p);
+  r = r < -1 ? -1 : r > 1 ? 1 : r;
+  phi = acos(r) / 3;
+  return 2 * sqrt(3.0) * p * sin(phi + M_PI / 3);
+}
+
 int render_values(const particles *ps, const char *by, unsigned need,
                   double *out, char *err, size_t errlen) {
   char name[64], keys[1536];
@@ -78,7 +106,7 @@ int render_values(const particles *ps, const char *by, unsigned need,
     if (strcmp(by, "sdiff") == 0) {
       for (i = 0; out && i < ps->n; i++) {
         double d = ps->s[S_XX][i] - ps->s[S_YY][i], t = ps->s[S_XY][i];
-        out[i] = sqrt(d * d + 4 * t * t);
+        out[i] = DIM == 3 ? spread3(ps, i) : sqrt(d * d + 4 * t * t);
       }
       return RENDER_SCALAR;
     }
@@ -383,32 +411,137 @@ const char *render_length_unit(const char *units) {
   return NULL;
 }
 
-/* one particle: its square of side sqrt(volume0) mapped by F */
+/* the picture's axes (render_view_axes) */
+typedef struct view {
+  int h, u, a;     /* right, up, along (-1 in 2-D) */
+  double toward;   /* +1 or -1: the viewer's side along a */
+} view;
+
+int render_view_axes(const char *axis, int *h, int *u, int *a, char *err,
+                     size_t errlen) {
+  /* h x u points at the viewer, so no picture is mirrored */
+  static const int hs[] = {2, 0, 0}, us[] = {1, 2, 1};
+  int k = !axis ? 2 : !strcmp(axis, "x") ? 0 : !strcmp(axis, "y") ? 1
+          : !strcmp(axis, "z") ? 2 : -1;
+  if (k < 0 || (DIM == 2 && k != 2)) {
+    snprintf(err, errlen, "axis must be %s (got '%s')",
+             DIM == 2 ? "z in 2-D" : "x, y or z", axis);
+    return -1;
+  }
+  *h = DIM == 2 ? 0 : hs[k];
+  *u = DIM == 2 ? 1 : us[k];
+  *a = DIM == 2 ? -1 : k;
+  return 0;
+}
+
+/* det F of particle i */
+static double det_at(const particles *ps, size_t i) {
+  double T[NTENS];
+  int c;
+  for (c = 0; c < NTENS; c++) T[c] = ps->F[c][i];
+  return vec_det(T);
+}
+
+/* half the side of particle i's cube (square in 2-D) */
+static double halfside(const particles *ps, size_t i) {
+  double v = ps->vol0[i] > 0 ? ps->vol0[i] : 0;
+  return 0.5 * (DIM == 2 ? sqrt(v) : cbrt(v));
+}
+
+/* one particle: its square of side sqrt(volume0) (in 3-D the face of its
+** cube across the view) mapped by F's block in the picture's plane */
 static void particle(pen *p, const render_layout *L, const particles *ps,
-                     size_t i, const render_opts *o, uint32_t col) {
+                     size_t i, const render_opts *o, const view *w,
+                     uint32_t col) {
   double a, e[2][2], xs[4], ys[4], cx, cy;
-  int k;
-#if DIM == 2
-  a = 0.5 * sqrt(ps->vol0[i] > 0 ? ps->vol0[i] : 0);
-#else
-  a = 0.5 * cbrt(ps->vol0[i] > 0 ? ps->vol0[i] : 0);
-#endif
+  int k, h = w->h, u = w->u;
+  a = halfside(ps, i);
   /* the columns of F (in-plane part) are the images of the edges */
-  e[0][0] = ps->F[0][i];       e[0][1] = ps->F[DIM][i];
-  e[1][0] = ps->F[1][i];       e[1][1] = ps->F[DIM + 1][i];
+  e[0][0] = ps->F[h * DIM + h][i];  e[0][1] = ps->F[u * DIM + h][i];
+  e[1][0] = ps->F[h * DIM + u][i];  e[1][1] = ps->F[u * DIM + u][i];
   if (!(isfinite(e[0][0] + e[0][1] + e[1][0] + e[1][1])) ||
       e[0][0] * e[1][1] - e[0][1] * e[1][0] <= 0) {
     e[0][0] = e[1][1] = 1;     /* inverted or broken F: the initial square */
     e[0][1] = e[1][0] = 0;
   }
-  cx = L->dx0 + (ps->x[0][i] - o->lo[0]) * L->sc;
-  cy = L->dy0 + (o->hi[1] - ps->x[1][i]) * L->sc;
+  cx = L->dx0 + (ps->x[h][i] - o->lo[0]) * L->sc;
+  cy = L->dy0 + (o->hi[1] - ps->x[u][i]) * L->sc;
   for (k = 0; k < 4; k++) {
-    double u = (k == 0 || k == 3) ? -a : a, w = k < 2 ? -a : a;
-    xs[k] = cx + (e[0][0] * u + e[1][0] * w) * L->sc;
-    ys[k] = cy - (e[0][1] * u + e[1][1] * w) * L->sc;
+    double s = (k == 0 || k == 3) ? -a : a, t = k < 2 ? -a : a;
+    xs[k] = cx + (e[0][0] * s + e[1][0] * t) * L->sc;
+    ys[k] = cy - (e[0][1] * s + e[1][1] * t) * L->sc;
   }
   p_poly(p, 4, xs, ys, col);
+}
+
+/*
+** 3-D: the particles drawn, farthest first (qsort is not stable, so
+** equal depths go in store order by the index).  A particle with a
+** position that is not finite is left out.
+*/
+typedef struct deep {
+  double z;
+  size_t i;
+} deep;
+
+static int cmpdeep(const void *x, const void *y) {
+  const deep *a = x, *b = y;
+  if (a->z != b->z) return a->z < b->z ? -1 : 1;
+  return (a->i > b->i) - (a->i < b->i);
+}
+
+/* how far particle i's cube, mapped by F, reaches along axis a from its
+** centre: half its side times the sum of |F_ab| over b (the initial half
+** side when F is broken) */
+static double reach(const particles *ps, size_t i, int a) {
+  double r = 0;
+  int b;
+  for (b = 0; b < DIM; b++) r += fabs(ps->F[a * DIM + b][i]);
+  if (!isfinite(r) || !(det_at(ps, i) > 0)) r = 1;
+  return halfside(ps, i) * r;
+}
+
+/* the slice's place: as given, else the middle of the particles */
+static double slice_at(const particles *ps, const render_opts *o, int a) {
+  double lo = HUGE_VAL, hi = -HUGE_VAL;
+  size_t i;
+  if (o->has_at) return o->at;
+  for (i = 0; i < ps->n; i++)
+    if (isfinite(ps->x[a][i])) {
+      if (ps->x[a][i] < lo) lo = ps->x[a][i];
+      if (ps->x[a][i] > hi) hi = ps->x[a][i];
+    }
+  return lo <= hi ? lo / 2 + hi / 2 : 0;
+}
+
+/* the order of drawing into *out (malloc'ed; NULL in 2-D: store order);
+** the count; -1 when out of memory */
+static long depth_order(const particles *ps, const render_opts *o,
+                        const view *w, double at, size_t **out) {
+  deep *d;
+  size_t i, n = 0, *idx;
+  *out = NULL;
+  if (w->a < 0) return (long)ps->n;
+  d = malloc((ps->n ? ps->n : 1) * sizeof *d);
+  if (!d) return -1;
+  for (i = 0; i < ps->n; i++) {
+    double z = ps->x[w->a][i];
+    double half = o->thick > 0 ? o->thick / 2 : reach(ps, i, w->a);
+    if (!isfinite(z)) continue;
+    if (!o->project && !(fabs(z - at) < half)) continue;
+    d[n].z = w->toward * z;
+    d[n++].i = i;
+  }
+  qsort(d, n, sizeof *d, cmpdeep);
+  idx = malloc((n ? n : 1) * sizeof *idx);
+  if (!idx) {
+    free(d);
+    return -1;
+  }
+  for (i = 0; i < n; i++) idx[i] = d[i].i;
+  free(d);
+  *out = idx;
+  return (long)n;
 }
 
 #define MAXLEG 24
@@ -516,8 +649,13 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   ticks cb, tx, ty;
   const char *u = o->unit && o->unit[0] ? o->unit : NULL;
   double us = 1;  /* world length to the axes' unit */
+  view W;
+  size_t *ord = NULL;
+  long nd;
   memset(&L, 0, sizeof L);
   L.matrix = -1;
+  if (render_view_axes(o->axis, &W.h, &W.u, &W.a, err, errlen)) return -1;
+  W.toward = W.a == 2 ? 1 : -1;
   lx = o->hi[0] - o->lo[0];
   ly = o->hi[1] - o->lo[1];
   if (!(lx > 0) || !(ly > 0) || !isfinite(lx) || !isfinite(ly)) {
@@ -592,8 +730,8 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   /* metres for a small domain read better as mm or μm */
   if (u && strcmp(u, "m") == 0 && lx < 1e-4) { us = 1e6; u = "μm"; }
   else if (u && strcmp(u, "m") == 0 && lx < 0.1) { us = 1e3; u = "mm"; }
-  snprintf(xt, sizeof xt, u ? "x (%s)" : "x", u);
-  snprintf(yt, sizeof yt, u ? "y (%s)" : "y", u);
+  snprintf(xt, sizeof xt, u ? "%c (%s)" : "%c", "xyz"[W.h], u);
+  snprintf(yt, sizeof yt, u ? "%c (%s)" : "%c", "xyz"[W.u], u);
   memset(&ty, 0, sizeof ty);
   memset(&tx, 0, sizeof tx);
   left = m;
@@ -674,14 +812,25 @@ static int draw(pen *P, int (*init)(pen *, int, int), render_layout *lay,
   }
 
   /* particles, clipped to the domain, then its outline just outside */
+  L.at = W.a >= 0 ? slice_at(ps, o, W.a) : 0;
+  nd = depth_order(ps, o, &W, L.at, &ord);
+  if (nd < 0) {
+    free(v);
+    free(cnt);
+    snprintf(err, errlen, "out of memory for %zu particles", ps->n);
+    return -1;
+  }
+  L.drawn = (size_t)nd;
   p_clip(P, L.dx0, L.dy0, L.dx1, L.dy1);
-  for (i = 0; i < ps->n; i++) {
+  for (k = 0; k < nd; k++) {
     uint32_t col;
+    i = ord ? ord[k] : (size_t)k;
     if (kind == RENDER_BODY) col = render_body_color((int)v[i], L.matrix);
     else if (isnan(v[i])) col = CMAP_NAN;
     else col = cmap_color(L.cmap, cfrac(o, &L, v[i]));
-    particle(P, &L, ps, i, o, col);
+    particle(P, &L, ps, i, o, &W, col);
   }
+  free(ord);
   p_noclip(P);
   p_frame(P, L.dx0 - s, L.dy0 - s, L.dx1 + s, L.dy1 + s, s, INK);
   if (o->title && o->title[0])

@@ -43,6 +43,23 @@
 ** quarter of the particles and twice any other's) is drawn in the
 ** neutral RENDER_MATRIX grey, which no grain colour is.
 **
+** In 3-D the picture looks along an axis (axis "x", "y" or "z"; z by
+** default) with the other two across it, never mirrored: along z, x to
+** the right and y up, seen from +z; along x, z right and y up, seen from
+** -x; along y, x right and z up, seen from -y.  lo and hi are then the
+** window in those two axes (render_view_axes names them).  A slice
+** (project 0) draws the particles whose cube (side cbrt(volume0),
+** mapped by F) crosses the plane at `at` along the axis, or with
+** thick > 0 those whose centre is within thick / 2 of it; `at` is,
+** unless given, the middle of the particles' extent along the axis.
+** The colour range is taken from all the particles, so that slices of
+** one store share it.  A projection (project 1) draws them
+** all.  Either way the farthest are drawn first, so the nearest are on
+** top, and each is the face of its cube across the axis mapped by the
+** block of F in the picture's plane.  sdiff in 3-D is the largest
+** principal stress difference s1 - s3.  A 2-D store takes axis NULL or
+** "z" and ignores the rest.
+**
 ** Output is a function of the input alone (no clocks, no randomness), so
 ** the same store gives the same bytes.  A file name ending in ".svg"
 ** gets the same picture as SVG (render_file): particles as polygons,
@@ -81,6 +98,14 @@ typedef struct render_opts {
   unsigned need;             /* fields without all these pfield flags
                                 count as absent: a snapshot read back
                                 holds only PF_OUTPUT ones */
+  /* 3-D (above): zero for all of them is the slice across z through
+  ** the middle of the particles */
+  const char *axis;          /* "x", "y" or "z" looked along; NULL: "z" */
+  int project;               /* 1: all particles; 0: a slice */
+  int has_at;
+  double at;                 /* the slice's place along the axis */
+  double thick;              /* > 0: the slab's thickness; 0: each
+                                particle's own cube */
 } render_opts;
 
 /* where things went, for tests and callers that annotate */
@@ -95,6 +120,8 @@ typedef struct render_layout {
   int cmap;                  /* colormap used (scalars) */
   int matrix;                /* body drawn as the matrix, or -1 */
   double bar;                /* the scale bar's length in the axes' unit */
+  size_t drawn;              /* particles drawn (3-D: in the slice) */
+  double at;                 /* 3-D slice: its place along the axis */
 } render_layout;
 
 /* what a key gives */
@@ -121,6 +148,11 @@ int render_svg(const char *path, const particles *ps, const render_opts *o,
 /* render_svg when path ends in ".svg" (any case), else render_png */
 int render_file(const char *path, const particles *ps, const render_opts *o,
                 char *err, size_t errlen);
+/* the axes of a picture looked along axis (render_opts.axis; NULL is
+** "z"): h across to the right, u up, a along (-1 in 2-D).  0, or -1 with
+** err for a name that is not an axis of this build. */
+int render_view_axes(const char *axis, int *h, int *u, int *a, char *err,
+                     size_t errlen);
 /* the colour of body b in a picture whose matrix body is matrix */
 uint32_t render_body_color(int b, int matrix);
 /* the length unit of a scene's units string: "m" for "SI", "cm" for

@@ -384,8 +384,14 @@ static void series(const char *dir) {
                         : "Dimensions=\"1000 3\">particles_000000.h5:/position<",
          1);
   xmfhas(path, "AttributeType=\"Vector\"", 2); /* velocity, 2 steps */
-  /* tensors as one Matrix each (stress, F), every reader sees them */
+  /* the stress as one Matrix, every reader sees it; F too in 2-D, and
+  ** in 3-D, a full 3 x 3 tensor, as XDMF's Tensor */
   xmfhas(path, "<Attribute Name=\"stress\" AttributeType=\"Matrix\"", 2);
+  xmfhas(path, DIM == 2 ? "<Attribute Name=\"F\" AttributeType=\"Matrix\""
+                        : "<Attribute Name=\"F\" AttributeType=\"Tensor\"", 2);
+  xmfhas(path, DIM == 2 ? "GeometryType=\"XY\"" : "GeometryType=\"XYZ\"", 3);
+  xmfhas(path, DIM == 2 ? "Dimensions=\"1 2\">0 0<" : "Dimensions=\"1 3\">0 0 0<",
+         1);
   xmfhas(path, "ItemType=\"HyperSlab\"", 0);
   /* the connectivity the Xdmf3 readers need, in each non-empty step */
   xmfhas(path, ":/xdmf/vertex</DataItem>", 2);
@@ -430,6 +436,53 @@ static void blake2b(void) {
   }
 }
 
+/* the frame (domain, periodic axes, bodies) goes out and comes back
+** with DIM entries per vector, and the positions with DIM components */
+static void frame(const char *dir) {
+  particles a, b;
+  h5frame fw, fr;
+  h5meta m = {.time = 0.5, .step = 3, .cell = 0.1, .units = "SI",
+              .scene = "s.lua", .source = NULL}, r;
+  char path[512], err[512], names[2][H5_NAMELEN] = {"grain", "wall"};
+  int32_t driven[2] = {0, 1};
+  int d, ok = 1, f;
+  memset(&fw, 0, sizeof fw);
+  for (d = 0; d < DIM; d++) {
+    fw.lo[d] = -1.0 - d;
+    fw.hi[d] = 2.0 + d;
+    fw.periodic[d] = d % 2;
+  }
+  fw.nbody = 2;
+  fw.name = names;
+  fw.driven = driven;
+  m.frame = &fw;
+  particles_init(&a);
+  particles_push(&a);
+  for (d = 0; d < DIM; d++) a.x[d][0] = 0.25 * (d + 1);
+  join(path, sizeof path, dir, "frame.h5");
+  UNIT_CHECK(out_h5_write(path, &a, &m, err, sizeof err) == 0, "frame: %s", err);
+  particles_init(&b);
+  memset(&fr, 0, sizeof fr);
+  UNIT_CHECK(out_h5_read_frame(path, NULL, &b, &r, &fr, err, sizeof err) == 0,
+             "frame read: %s", err);
+  for (d = 0; d < DIM; d++)
+    ok = ok && fr.lo[d] == fw.lo[d] && fr.hi[d] == fw.hi[d] &&
+         fr.periodic[d] == fw.periodic[d] && b.x[d][0] == a.x[d][0];
+  UNIT_CHECK(fr.has_domain && ok, "%d-D domain, periodic axes and position "
+             "back", DIM);
+  UNIT_CHECK(fr.nbody == 2 && strcmp(fr.name[0], "grain") == 0 &&
+             strcmp(fr.name[1], "wall") == 0 && fr.driven[0] == 0 &&
+             fr.driven[1] == 1 && strcmp(fr.units, "SI") == 0,
+             "bodies' names, drive flags and units back");
+  f = particles_find(&b, "position");
+  UNIT_CHECK(f >= 0 && b.fields[f].ncomp == DIM, "position has %d components",
+             DIM);
+  out_h5_frame_free(&fr);
+  particles_free(&a);
+  particles_free(&b);
+  remove(path);
+}
+
 int main(int argc, char **argv) {
   setvbuf(stdout, NULL, _IONBF, 0);
   char tmpl[] = "/tmp/test_out_h5.XXXXXX";
@@ -443,6 +496,7 @@ int main(int argc, char **argv) {
   failures(dir);
   damaged(dir);
   series(dir);
+  frame(dir);
   if (argc > 1) printf("series kept in %s/series.xmf\n", dir);
   else cleanup(dir);
   UNIT_END("test_out_h5");

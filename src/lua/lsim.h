@@ -90,16 +90,11 @@ typedef struct lbody {
 #define LSIM_MAX_SPAN 1e15    /* steps across t_end, where a value enters */
 #define LSIM_MAX_EVENTS 1e9   /* outputs, checkpoints, calls of a callback */
 
-/* a rotation quantity (angular momentum, spin) as its components: a
-** scalar (2-D, the z component) is one, a vector in 3-D three */
-#define LSIM_NCOMP(q) ((int)(sizeof(q) / sizeof(double)))
-#define LSIM_COMP(q) ((const double *)&(q))
-
 /* lua_sim.c */
-/* push a rotation quantity of n components: in 2-D the number (its z
-** component, the last), in 3-D a table {x, y, z} (as_table) or the n
-** numbers; returns how many values it pushed */
-int lsim_push_rot(lua_State *L, const double *q, int n, int as_table);
+/* push a rotation vector q[3] (angular momentum, spin): in 2-D the
+** number q[2] (its z component, the only one), in 3-D a table {x, y, z}
+** (as_table) or the three numbers; returns how many values it pushed */
+int lsim_push_rot(lua_State *L, const double *q, int as_table);
 extern const char *const lsim_side_names[];  /* "left", "right", ... */
 /* refuse a velocity v (DIM components) that the step cannot follow: its
 ** CFL step would need more than LSIM_MAX_SPAN steps to t_end.  fnidx: the

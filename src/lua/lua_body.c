@@ -621,9 +621,9 @@ static int bdiag_(lua_State *L) {
     setnum(L, xs[d], o.x[d]);
     setnum(L, vs[d], o.v[d]);
   }
-  lsim_push_rot(L, LSIM_COMP(o.omega), LSIM_NCOMP(o.omega), 1);
+  lsim_push_rot(L, o.omega, 1);
   lua_setfield(L, -2, "omega");
-  lsim_push_rot(L, LSIM_COMP(o.angmom), LSIM_NCOMP(o.angmom), 1);
+  lsim_push_rot(L, o.angmom, 1);
   lua_setfield(L, -2, "angmom");
   if (DIM == 2) setnum(L, "inertia", o.inertia[2][2]);
   else { /* the inertia tensor about the centroid, row by row */
@@ -651,7 +651,7 @@ static int bvec(lua_State *L, int which) {
   bdiag o;
   int d;
   diag_of(L, lb, &o);
-  if (which == 2) return lsim_push_rot(L, LSIM_COMP(o.omega), LSIM_NCOMP(o.omega), 0);
+  if (which == 2) return lsim_push_rot(L, o.omega, 0);
   if (which == 3) { lua_pushnumber(L, o.mass); return 1; }
   for (d = 0; d < DIM; d++) lua_pushnumber(L, which ? o.v[d] : o.x[d]);
   return DIM;

@@ -198,18 +198,18 @@ static void newuv(lua_State *L) {
   lua_setiuservalue(L, -2, 1);
 }
 
-int lsim_push_rot(lua_State *L, const double *q, int n, int as_table) {
+int lsim_push_rot(lua_State *L, const double *q, int as_table) {
   int k;
-  if (DIM == 2 || n == 1) {
-    lua_pushnumber(L, q[n - 1]);
+  if (DIM == 2) {
+    lua_pushnumber(L, q[2]);
     return 1;
   }
-  if (as_table) lua_createtable(L, n, 0);
-  for (k = 0; k < n; k++) {
+  if (as_table) lua_createtable(L, 3, 0);
+  for (k = 0; k < 3; k++) {
     lua_pushnumber(L, q[k]);
     if (as_table) lua_rawseti(L, -2, k + 1);
   }
-  return as_table ? 1 : n;
+  return as_table ? 1 : 3;
 }
 
 /* sim{dim = N}: the dimension the scene is written for.  This build
@@ -733,7 +733,7 @@ static int lenergy(lua_State *L) {
   lua_setfield(L, -2, "debonded");
   setnum(L, "bonded_area", s->bond_area);
   for (d = 0; d < DIM; d++) setnum(L, pnames[d], s->e.mom[d]);
-  lsim_push_rot(L, LSIM_COMP(s->e.angmom), LSIM_NCOMP(s->e.angmom), 1);
+  lsim_push_rot(L, s->e.angmom, 1);
   lua_setfield(L, -2, "angmom");
   setnum(L, "jmin", s->e.jmin);
   setnum(L, "jmax", s->e.jmax);

@@ -158,7 +158,7 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[8] = s->e.boundary; v[9] = s->e.thermal; v[10] = tot;
   v[11] = sim_residual(s);
   v[12] = s->e.mom[0]; v[13] = s->e.mom[1];
-  v[14] = LSIM_COMP(s->e.angmom)[LSIM_NCOMP(s->e.angmom) - 1];
+  v[14] = s->e.angmom[2];
   v[15] = s->e.jmin; v[16] = s->e.jmax; v[17] = (double)s->ps.n;
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
   v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;
@@ -177,12 +177,11 @@ static void csv_row(lua_State *L, lsim *ls) {
   }
   if (NCOLS_3D) { /* the 3-D columns go before the heat's */
     double w[NCOLS_ALL + 3];
-    const double *am = LSIM_COMP(s->e.angmom);
-    int k, n3 = LSIM_NCOMP(s->e.angmom) == 3;
+    int k;
     for (k = 0; k < NCOLS_BASE; k++) w[k] = v[k];
     w[NCOLS_BASE] = s->e.mom[DIM - 1];
-    w[NCOLS_BASE + 1] = n3 ? am[0] : 0;
-    w[NCOLS_BASE + 2] = n3 ? am[1] : 0;
+    w[NCOLS_BASE + 1] = s->e.angmom[0];
+    w[NCOLS_BASE + 2] = s->e.angmom[1];
     for (k = 0; s->heat && k < NCOLS_HEAT; k++)
       w[NCOLS_BASE + 3 + k] = v[NCOLS_BASE + k];
     if (out_csv_row(&ls->csv, w, err, sizeof err)) luaL_error(L, "%s", err);

@@ -105,15 +105,16 @@ SRC     = $(wildcard $(LAYERS:%=src/%/*.c))
 # dimensions' functions live side by side.  The sources below never see
 # dim.h and are built once: their state (the interrupt flag, the Lua
 # registry helpers) must be one for both.  make checks this list against
-# the compiler's dependency files.  The application layer is built once,
-# for 2-D: it reaches 3-D through the Lua layer (mvmpm.sim{dim = 3}).
+# the compiler's dependency files.  entry.c's main runs the 2-D
+# application, and the 3-D one when the command's scene, checkpoint or
+# snapshot is 3-D (src/app/app.h).
 DIMFREE = core/hash core/par core/shape io/h5sum io/ofile io/out_csv \
-          lua/interrupt lua/lstate lua/version render/axis \
+          lua/interrupt lua/lstate lua/version render/axis app/entry app/repl \
           render/canvas render/cmap render/font render/plot_png render/png \
           render/svg
 # the names each dimension's code calls in the other (lmvmpm.h)
-DIMKEEP = lmvmpm_enter3
-SRC3    = $(filter-out $(DIMFREE:%=src/%.c) src/app/%,$(SRC))
+DIMKEEP = lmvmpm_enter3 lmvmpm_loaded3 app_main3
+SRC3    = $(filter-out $(DIMFREE:%=src/%.c),$(SRC))
 OBJ3    = $(SRC3:src/%.c=$(BUILD)/d3/%.o)
 OBJ     = $(SRC:src/%.c=$(BUILD)/%.o)
 ifeq ($(D3),1)
@@ -121,7 +122,7 @@ DIM3OBJ =
 else
 DIM3OBJ = $(BUILD)/dim3.o
 endif
-LIBOBJ  = $(filter-out $(BUILD)/app/main.o,$(OBJ)) $(DIM3OBJ)
+LIBOBJ  = $(filter-out $(BUILD)/app/entry.o,$(OBJ)) $(DIM3OBJ)
 UNIT    = $(wildcard tests/unit/test_*.c)
 UNITBIN = $(UNIT:tests/unit/%.c=$(BUILD)/unit/%)
 

@@ -105,15 +105,16 @@ SRC     = $(wildcard $(LAYERS:%=src/%/*.c))
 # dimensions' functions live side by side.  The sources below never see
 # dim.h and are built once: their state (the interrupt flag, the Lua
 # registry helpers) must be one for both.  make checks this list against
-# the compiler's dependency files.  The application layer is built once,
-# for 2-D: it reaches 3-D through the Lua layer (mvmpm.sim{dim = 3}).
+# the compiler's dependency files.  entry.c's main runs the 2-D
+# application, and the 3-D one when the command's scene, checkpoint or
+# snapshot is 3-D (src/app/app.h).
 DIMFREE = core/hash core/par core/shape io/h5sum io/ofile io/out_csv \
-          lua/interrupt lua/lstate lua/version render/axis \
+          lua/interrupt lua/lstate lua/version render/axis app/entry app/repl \
           render/canvas render/cmap render/font render/plot_png render/png \
           render/svg
 # the names each dimension's code calls in the other (lmvmpm.h)
-DIMKEEP = lmvmpm_enter3
-SRC3    = $(filter-out $(DIMFREE:%=src/%.c) src/app/%,$(SRC))
+DIMKEEP = lmvmpm_enter3 lmvmpm_loaded3 app_main3
+SRC3    = $(filter-out $(DIMFREE:%=src/%.c),$(SRC))
 OBJ3    = $(SRC3:src/%.c=$(BUILD)/d3/%.o)
 OBJ     = $(SRC:src/%.c=$(BUILD)/%.o)
 ifeq ($(D3),1)
@@ -121,7 +122,7 @@ DIM3OBJ =
 else
 DIM3OBJ = $(BUILD)/dim3.o
 endif
-LIBOBJ  = $(filter-out $(BUILD)/app/main.o,$(OBJ)) $(DIM3OBJ)
+LIBOBJ  = $(filter-out $(BUILD)/app/entry.o,$(OBJ)) $(DIM3OBJ)
 UNIT    = $(wildcard tests/unit/test_*.c)
 UNITBIN = $(UNIT:tests/unit/%.c=$(BUILD)/unit/%)
 
@@ -176,6 +177,21 @@ $(BUILD)/unit/test_ckpt: INC_unit = $(INC_io)
 $(BUILD)/unit/%: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
 	$(CC) $(CFLAGS) $(INC_unit) -o $@ $< $(LIBOBJ) $(LDLIBS)
 
+# the unit tests written for either dimension, built again for 3-D: the
+# object's calls are renamed as dim3.o's names were (its .syms map)
+UNIT3    = test_diag_dim test_dimvec test_normals test_out_h5 test_particles \
+           test_render_view test_walls
+ifeq ($(D3),1)
+UNIT3BIN =
+else
+UNIT3BIN = $(UNIT3:%=$(BUILD)/unit/%_3d)
+endif
+$(BUILD)/unit/%_3d: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
+	$(CC) $(CFLAGS) -DDIM=3 $(INC_unit) -c $< -o $@.o
+	objcopy --redefine-syms=$(BUILD)/dim3.o.syms $@.o
+	$(CC) $(CFLAGS) -o $@ $@.o $(LIBOBJ) $(LDLIBS)
+	rm -f $@.o
+
 $(BUILD) $(BUILD)/unit:
 	mkdir -p $@
 
@@ -183,9 +199,9 @@ deps:
 	@if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
 	$$SUDO apt-get update && DEBIAN_FRONTEND=noninteractive $$SUDO apt-get install -y $(DEB_PACKAGES)
 
-unit: $(UNITBIN)
+unit: $(UNITBIN) $(UNIT3BIN)
 
-test: $(BIN) $(UNITBIN) layers
+test: $(BIN) $(UNITBIN) $(UNIT3BIN) layers
 	@bash tests/run.sh $(BIN) $(BUILD)/unit
 
 # every include and every call between objects against the layers'

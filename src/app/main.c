@@ -21,6 +21,10 @@
 #include "lsim.h"
 #include "lualib.h"
 #include "render_cmd.h"
+#include "app.h"
+#include "out_h5.h"
+
+#define APP_OTHER LSIM_OTHER_DIM
 #include "prof.h"
 #include "repl.h"
 #include "sandbox.h"
@@ -318,6 +322,7 @@ static int restart_prepare(lua_State *L, runopts *o, ckpt *c, char *outdir,
     fprintf(stderr, "%s: %s\n", progname, err);
     return -1;
   }
+  if (out_h5_file_dim(path) == APP_OTHER) return APP_REDO;
   if (ckpt_read(c, path, err, sizeof err)) {
     fprintf(stderr, "%s: %s\n", progname, err);
     return -1;
@@ -451,6 +456,21 @@ static void profile(const lsim *ls) {
   prof_report(stdout, &ls->s);
 }
 
+/* A scene of the other dimension (lsim_dim_check) while the C side holds
+** a simulation of this one: the scene stops, and the command starts again
+** in that dimension (entry.c).  mark: on while a scene is loaded */
+static void redo_mark(lua_State *L, int on) {
+  if (on) lua_pushboolean(L, 1);
+  else lua_pushnil(L);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.redo");
+}
+
+static int redo_asked(lua_State *L) {
+  int r = lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.redo_dim") == LUA_TNUMBER;
+  lua_pop(L, 1);
+  return r;
+}
+
 static int cmd_run(int argc, char **argv) {
   runopts o;
   int rc;
@@ -475,8 +495,12 @@ static int cmd_run(int argc, char **argv) {
       lua_close(L);
       return 1;
     }
-    if (restart_prepare(L, &o, &c, root, sizeof root) ||
-        restart_sandbox(&o, &c) ||
+    if ((rc = restart_prepare(L, &o, &c, root, sizeof root)) == APP_REDO) {
+      ckpt_free(&c);
+      lua_close(L);
+      return APP_REDO;
+    }
+    if (rc || restart_sandbox(&o, &c) ||
         (!o.scene && !(o.scene = stored_scene = ckpt_string(&c, CB_SCENE))) ||
         !(text = restart_scene_text(&c, o.scene))) {
       ckpt_free(&c);
@@ -502,8 +526,16 @@ static int cmd_run(int argc, char **argv) {
     return 1;
   }
   if (o.sandbox) sandbox_open(L, root);
+  redo_mark(L, 1);
   if ((text ? lmvmpm_load_text(L, o.scene, text) : lmvmpm_load(L, o.scene)) ||
       lmvmpm_check_overrides(L)) {
+    if (redo_asked(L)) {
+      ckpt_free(&c);
+      free(stored_scene);
+      free(text);
+      lua_close(L);
+      return APP_REDO;
+    }
     fail(L, NULL);
     ckpt_free(&c);
     free(stored_scene);
@@ -512,6 +544,7 @@ static int cmd_run(int argc, char **argv) {
     return 1;
   }
   free(text);
+  redo_mark(L, 0);
   ls = lua_touserdata(L, -1);
   if (o.t_end > 0 && !o.restart) ls->s.t_end = o.t_end;
   if (o.ck_every > 0 && (ls->s.t_end - ls->s.t) / o.ck_every > LSIM_MAX_EVENTS) {
@@ -666,11 +699,14 @@ static int cmd_repl(int argc, char **argv) {
   lua_settop(L, 0);
   if (scene) {
     lsim *ls;
+    redo_mark(L, 1);
     if (lmvmpm_load(L, scene) || lmvmpm_check_overrides(L)) {
-      fail(L, NULL);
+      int redo = redo_asked(L);
+      if (!redo) fail(L, NULL);
       lua_close(L);
-      return 1;
+      return redo ? APP_REDO : 1;
     }
+    redo_mark(L, 0);
     ls = lua_touserdata(L, -1);
     if (out) { snprintf(ls->outdir, sizeof ls->outdir, "%s", out); ls->out_enabled = 1; }
     ls->progress = 1;
@@ -765,7 +801,7 @@ static void malloc_tune(void) {
 #endif
 }
 
-int main(int argc, char **argv) {
+int app_main(int argc, char **argv) {
   malloc_tune();
   if (argc < 2) { usage(stderr); return 2; }
   if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
@@ -774,7 +810,7 @@ int main(int argc, char **argv) {
     return 0;
   }
   if (strcmp(argv[1], "--version") == 0) {
-    printf("mvmpm %s (%dD, Lua %s.%s)\n", mvmpm_version, DIM,
+    printf("mvmpm %s (2-D and 3-D, Lua %s.%s)\n", mvmpm_version,
            LUA_VERSION_MAJOR, LUA_VERSION_MINOR);
     return 0;
   }

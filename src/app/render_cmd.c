@@ -17,6 +17,8 @@
 #include "pcheck.h"
 #include "png.h"
 #include "render_cmd.h"
+#include "app.h"
+#include "lsim.h"
 #include "render_png.h"
 
 static const char *prog = "mvmpm render";
@@ -149,6 +151,8 @@ int render_cmd(int argc, char **argv) {
     if (takes) i++;
   }
   if (!snap) return usage_error("no snapshot given", NULL);
+  /* a snapshot of the other dimension is drawn by that dimension's code */
+  if (out_h5_file_dim(snap) == LSIM_OTHER_DIM) return APP_REDO;
   if (render_view_axes(o.axis, &h, &u, &along, err, sizeof err)) {
     fprintf(stderr, "%s: --axis: %s\n", prog, err);
     return 2;

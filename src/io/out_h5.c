@@ -1137,3 +1137,22 @@ int out_h5_read_frame(const char *path, const char *format, particles *ps,
 }
 
 /* }====================================================== */
+
+int out_h5_file_dim(const char *path) {
+  H5E_auto2_t efunc;
+  void *edata;
+  hid_t f, a;
+  int dim = -1;
+  H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+  H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f >= 0) {
+    if (H5Aexists(f, "dim") > 0 && (a = H5Aopen(f, "dim", H5P_DEFAULT)) >= 0) {
+      if (H5Aread(a, H5T_NATIVE_INT, &dim) < 0) dim = -1;
+      H5Aclose(a);
+    }
+    H5Fclose(f);
+  }
+  H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  return dim;
+}

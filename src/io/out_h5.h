@@ -133,4 +133,9 @@ int out_h5_read(const char *path, particles *ps, h5meta *meta, char *err,
 int out_h5_read_frame(const char *path, const char *format, particles *ps,
                       h5meta *meta, h5frame *fr, char *err, size_t errlen);
 
+/* the dimension a snapshot or checkpoint was written in (its root
+** attribute "dim"), or -1 when the file cannot be read or has none: the
+** application starts again in the file's dimension */
+int out_h5_file_dim(const char *path);
+
 #endif

@@ -323,7 +323,7 @@ int lmvmpm_load_text(lua_State *L, const char *path, const char *src) {
     lua_settop(L, base + 1);
     return -1;
   }
-  if (!luaL_testudata(L, -1, LSIM_MT)) {
+  if (!luaL_testudata(L, -1, LSIM_MT) && !luaL_testudata(L, -1, LSIM_OTHER_MT)) {
     lua_pop(L, 1);
     if (lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.last") == LUA_TNIL) {
       lua_settop(L, base);
@@ -334,16 +334,21 @@ int lmvmpm_load_text(lua_State *L, const char *path, const char *src) {
   }
   lua_replace(L, base + 1);
   lua_settop(L, base + 1);
-  {
-    lsim *ls = lua_touserdata(L, -1);
-    if (ls->closed) {
-      lua_settop(L, base);
-      lua_pushfstring(L, "%s: the scene closed its simulation (its __gc "
-                      "ran)", path);
-      return -1;
-    }
-    snprintf(ls->scene, sizeof ls->scene, "%s", path);
+  /* the simulation may be the other dimension's (mvmpm.sim{dim = ...}) */
+  if (!luaL_testudata(L, -1, LSIM_MT) && lmvmpm_loaded_other)
+    return lmvmpm_loaded_other(L, base, path);
+  return lmvmpm_loaded(L, base, path);
+}
+
+int lmvmpm_loaded(lua_State *L, int base, const char *path) {
+  lsim *ls = lua_touserdata(L, -1);
+  if (ls->closed) {
+    lua_settop(L, base);
+    lua_pushfstring(L, "%s: the scene closed its simulation (its __gc "
+                    "ran)", path);
+    return -1;
   }
+  snprintf(ls->scene, sizeof ls->scene, "%s", path);
   return 0;
 }
 
@@ -488,18 +493,13 @@ static int modindex(lua_State *L) {
   return chk_nokey(L, "mvmpm", k, 1, NULL);
 }
 
-int luaopen_mvmpm(lua_State *L) {
+/* this dimension's functions and constants into the module table mod */
+static void fill(lua_State *L, int mod) {
   static const luaL_Reg fns[] = {{"sim", lsim_new}, {"params", params},
                                  {"load", load}, {"clock", lclock}, {"cpu", lcpu},
                                  {"open", lopen},
                                  {NULL, NULL}};
-  int mod;
-  luaL_newlib(L, fns);
-  mod = lua_gettop(L);
-  lua_createtable(L, 0, 1);
-  lua_pushcfunction(L, modindex);
-  lua_setfield(L, -2, "__index");
-  lua_setmetatable(L, mod);
+  luaL_setfuncs(L, fns, 0);
   lua_pushstring(L, mvmpm_version);
   lua_setfield(L, mod, "version");
   lua_pushinteger(L, DIM);
@@ -509,6 +509,28 @@ int luaopen_mvmpm(lua_State *L) {
   lmat_open(L, mod);
   lshape_open(L, mod);
   lrender_open(L, mod);
+}
+
+int lmvmpm_enter(lua_State *L) {
+  int top = lua_gettop(L);
+  if (lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.module") == LUA_TTABLE)
+    fill(L, lua_gettop(L));
+  lua_settop(L, top);
+  return lsim_new(L);
+}
+
+int luaopen_mvmpm(lua_State *L) {
+  int mod;
+  lua_newtable(L);
+  mod = lua_gettop(L);
+  fill(L, mod);
+  lua_createtable(L, 0, 1);
+  lua_pushcfunction(L, modindex);
+  lua_setfield(L, -2, "__index");
+  lua_setmetatable(L, mod);
+  /* the table a scene of the other dimension fills again */
+  lua_pushvalue(L, mod);
+  lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.module");
   return 1;
 }
 

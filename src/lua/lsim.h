@@ -19,10 +19,47 @@
 #include "out_xdmf.h"
 #include "sim.h"
 
-#define LSIM_MT "mvmpm.sim"
-#define LBODY_MT "mvmpm.body"
-#define LMAT_MT "mvmpm.material"
-#define LSHAPE_MT "mvmpm.shape"
+/*
+** One binary holds both dimensions (Makefile: the 3-D objects' names
+** carry _3d, all but DIMKEEP's).  Each dimension's Lua objects have
+** metatables of their own, and the few entry points one dimension calls
+** in the other have a name per dimension: N = this one's, O = the other's.
+*/
+#if DIM == 2
+#define LSIM_TAG ""
+#define LSIM_OTHER_TAG "3"
+#define LSIM_OTHER_DIM 3
+#define lmvmpm_enter lmvmpm_enter2
+#define lmvmpm_enter_other lmvmpm_enter3
+#define lmvmpm_loaded lmvmpm_loaded2
+#define lmvmpm_loaded_other lmvmpm_loaded3
+#elif DIM == 3
+#define LSIM_TAG "3"
+#define LSIM_OTHER_TAG ""
+#define LSIM_OTHER_DIM 2
+#define lmvmpm_enter lmvmpm_enter3
+#define lmvmpm_enter_other lmvmpm_enter2
+#define lmvmpm_loaded lmvmpm_loaded3
+#define lmvmpm_loaded_other lmvmpm_loaded2
+#else
+#error "lsim.h: DIM must be 2 or 3"
+#endif
+#define LSIM_MT "mvmpm.sim" LSIM_TAG
+#define LBODY_MT "mvmpm.body" LSIM_TAG
+#define LMAT_MT "mvmpm.material" LSIM_TAG
+#define LSHAPE_MT "mvmpm.shape" LSIM_TAG
+#define LSIM_OTHER_MT "mvmpm.sim" LSIM_OTHER_TAG
+
+/* mvmpm.sim{dim = ...} of the other dimension: the module table (the
+** registry's "mvmpm.module") takes that dimension's functions, then its
+** sim constructor runs on the same arguments.  Weak: a build without the
+** other dimension (the stock interpreter's module) has none, and says so */
+int lmvmpm_enter2(lua_State *L) __attribute__((weak));
+int lmvmpm_enter3(lua_State *L) __attribute__((weak));
+/* what loading a scene does to the simulation it made (lmvmpm_load's
+** end), for a simulation of this dimension at index idx */
+int lmvmpm_loaded2(lua_State *L, int idx, const char *path) __attribute__((weak));
+int lmvmpm_loaded3(lua_State *L, int idx, const char *path) __attribute__((weak));
 
 typedef struct lsim {
   sim s;

@@ -302,14 +302,14 @@ static void seedbox_free(seedbox *bx) {
 }
 
 static int seedbox_gc(lua_State *L) {
-  seedbox_free(luaL_checkudata(L, 1, "mvmpm.seedbox"));
+  seedbox_free(luaL_checkudata(L, 1, "mvmpm.seedbox" LSIM_TAG));
   return 0;
 }
 
 static seedbox *seedbox_new(lua_State *L) {
   seedbox *bx = lua_newuserdatauv(L, sizeof *bx, 0);
   memset(bx, 0, sizeof *bx);
-  if (luaL_newmetatable(L, "mvmpm.seedbox")) {
+  if (luaL_newmetatable(L, "mvmpm.seedbox" LSIM_TAG)) {
     lua_pushcfunction(L, seedbox_gc);
     lua_setfield(L, -2, "__gc");
     lsim_lock(L, -1);

@@ -37,7 +37,7 @@ lsim *lsim_check(lua_State *L, int idx) {
 ** hold as well as a return does.
 */
 static int unhold(lua_State *L) {
-  lsim **p = luaL_checkudata(L, 1, "mvmpm.hold");
+  lsim **p = luaL_checkudata(L, 1, "mvmpm.hold" LSIM_TAG);
   if (*p) {
     (*p)->busy--;
     *p = NULL;
@@ -54,7 +54,7 @@ void lsim_lock(lua_State *L, int mtidx) {
 void lsim_hold(lua_State *L, lsim *ls) {
   lsim **p = lua_newuserdatauv(L, sizeof *p, 0);
   *p = NULL;
-  if (luaL_newmetatable(L, "mvmpm.hold")) {
+  if (luaL_newmetatable(L, "mvmpm.hold" LSIM_TAG)) {
     lua_pushcfunction(L, unhold);
     lua_setfield(L, -2, "__close");
     lsim_lock(L, -1);
@@ -212,16 +212,29 @@ int lsim_push_rot(lua_State *L, const double *q, int as_table) {
   return as_table ? 1 : 3;
 }
 
-/* sim{dim = N}: the dimension the scene is written for.  This build
-** simulates DIM-D only; absent, dim means DIM.  (One binary holding both
-** builds sends a scene to the build its dim names before this runs.) */
+/* sim{dim = N}: the dimension the scene is written for, 2 unless it
+** says.  Returns 0 when it is this one; otherwise the other dimension's
+** constructor has run and left its result: returns 1.  Under a command
+** that must start again in the other dimension (the registry's
+** "mvmpm.redo", set by mvmpm run and a scene given to the REPL: their C
+** side holds this dimension's simulation), the dimension is noted in
+** "mvmpm.redo_dim" and the scene stops with an error saying so. */
 int lsim_dim_check(lua_State *L, int idx) {
-  double dim = chk_num(L, idx, "sim", "dim", DIM, 2, 3, CHK_INT);
-  if (dim != DIM)
-    luaL_error(L, "sim: field 'dim' is %d, but this build simulates %d-D: run "
-                  "the scene with the %d-D build, or give dim = %d and %d "
-                  "coordinates everywhere", (int)dim, DIM, (int)dim, DIM, DIM);
-  return DIM;
+  int dim = (int)chk_num(L, idx, "sim", "dim", 2, 2, 3, CHK_INT);
+  int redo;
+  if (dim == DIM) return 0;
+  if (!lmvmpm_enter_other)
+    luaL_error(L, "sim: field 'dim' is %d, but this build simulates %d-D only",
+               dim, DIM);
+  redo = lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.redo") == LUA_TBOOLEAN;
+  lua_pop(L, 1);
+  if (redo) {
+    lua_pushinteger(L, dim);
+    lua_setfield(L, LUA_REGISTRYINDEX, "mvmpm.redo_dim");
+    luaL_error(L, "sim: the scene is %d-D: starting again in %d-D", dim, dim);
+  }
+  lmvmpm_enter_other(L);
+  return 1;
 }
 
 /* the default thread count: $MVMPM_THREADS if it is a count, else 1 */
@@ -256,7 +269,7 @@ int lsim_new(lua_State *L) {
   sim *s;
   luaL_checktype(L, 1, LUA_TTABLE);
   chk_keys(L, 1, what, keys);
-  lsim_dim_check(L, 1);
+  if (lsim_dim_check(L, 1)) return 1;
   /* domain = {x = {0, 3}, y = {0, 3}} */
   lua_getfield(L, 1, "domain");
   if (!lua_istable(L, -1))

@@ -280,8 +280,8 @@ void chk_vec(lua_State *L, int idx, const char *what, const char *key,
   if (luaL_len(L, -1) != n)
     luaL_error(L, "%s: field '%s' must be a list of %d numbers (got %d)%s",
                what, key, n, (int)luaL_len(L, -1),
-               n == DIM ? (DIM == 2 ? "; this build simulates 2-D"
-                                    : "; this build simulates 3-D") : "");
+               n == DIM ? (DIM == 2 ? "; the scene is 2-D"
+                                    : "; the scene is 3-D") : "");
   for (k = 0; k < n; k++) {
     int isnum;
     lua_geti(L, -1, k + 1);

@@ -128,7 +128,7 @@ static int polygon(lua_State *L) {
   int n, d;
   lshape *sh;
   if (DIM != 2)
-    luaL_error(L, "polygon: a polygon is plane and this build simulates %d-D: "
+    luaL_error(L, "polygon: a polygon is plane and the scene is %d-D: "
                   "sweep it into a prism with mvmpm.extrude{polygon = {...}, "
                   "axis = \"z\", lo = , hi = }", DIM);
   luaL_checktype(L, 1, LUA_TTABLE);
@@ -153,8 +153,9 @@ static int extrude(lua_State *L) {
   double lo, hi;
   lshape *sh;
   if (DIM != 3)
-    luaL_error(L, "extrude: this build simulates %d-D, where the polygon "
-                  "itself is the shape: use mvmpm.polygon{...}", DIM);
+    luaL_error(L, "extrude: the scene is %d-D, where the polygon itself is "
+                  "the shape: use mvmpm.polygon{...} (a 3-D scene gives "
+                  "mvmpm.sim{dim = 3, ...} before its shapes)", DIM);
   luaL_checktype(L, 1, LUA_TTABLE);
   chk_keys(L, 1, "extrude", keys);
   ax = chk_option(L, 1, "extrude", "axis", 2, axes);

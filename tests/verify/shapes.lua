@@ -1,4 +1,6 @@
--- Shapes and seeding in this build's dimension (lua_shape.c, lua_body.c).
+-- Shapes and seeding (lua_shape.c, lua_body.c), in 2-D, then in 3-D
+-- (mvmpm.sim{dim = 3} switches the mvmpm functions to the 3-D half),
+-- then in 2-D again.
 --   1. The seeded measure (area in 2-D, volume in 3-D) of each shape is
 --      the count of lattice points inside it times the point's share of
 --      a cell; it converges to the shape's exact measure as the cell
@@ -18,8 +20,17 @@
 --   5. Bad shapes are refused with the field and the expected count.
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
-local D = mvmpm.dim
 local pi = math.pi
+
+-- one pass in dimension D: a first simulation of that dimension makes
+-- the mvmpm functions (shapes, vectors) that dimension's
+local function pass(D)
+V.case(string.format("%d-D", D))
+do
+  local dom = D == 2 and {x = {0, 1}, y = {0, 1}} or {x = {0, 1}, y = {0, 1}, z = {0, 1}}
+  mvmpm.sim {domain = dom, cell = 0.5, dim = D}
+  V.near("mvmpm.dim", mvmpm.dim, D, 0)
+end
 
 -- a point of D coordinates from the first D of x, y, z
 local function P(x, y, z) if D == 2 then return {x, y} end return {x, y, z} end
@@ -207,13 +218,16 @@ refuses("box with the wrong count", function() mvmpm.box {lo = wrong, hi = wrong
 refuses("cylinder with equal ends", function()
   mvmpm.cylinder {from = P(0.5, 0.5, 0.5), to = P(0.5, 0.5, 0.5), radius = 0.1} end,
   "cylinder: fields 'from' and 'to' must be distinct points")
-refuses("a sim of another dimension", function()
-  mvmpm.sim {domain = domain(), cell = 0.1, dim = 5 - D} end,
-  string.format("this build simulates %d-D", D))
+-- (a scene of the other dimension is run by that dimension's half of
+-- the program, so only dimensions no half simulates are refused here)
+refuses("a sim of dimension 4", function()
+  mvmpm.sim {domain = domain(), cell = 0.1, dim = 4} end, "sim: field 'dim'")
+refuses("a sim of dimension 2.5", function()
+  mvmpm.sim {domain = domain(), cell = 0.1, dim = 2.5} end, "sim: field 'dim'")
 if D == 2 then
   refuses("extrude in 2-D", function()
     mvmpm.extrude {polygon = {{0, 0}, {1, 0}, {0, 1}}, lo = 0, hi = 1} end,
-    "extrude: this build simulates 2-D")
+    "extrude: the scene is 2-D")
 else
   refuses("polygon in 3-D", function() mvmpm.polygon {{0, 0}, {1, 0}, {0, 1}} end,
           "polygon: a polygon is plane")
@@ -221,3 +235,8 @@ else
     mvmpm.extrude {polygon = {{0, 0}, {1, 0}, {0, 1}}, lo = 1, hi = 1} end,
     "extrude: field 'hi' must exceed 'lo'")
 end
+end
+
+pass(2)
+pass(3)
+pass(2) -- and back: the 2-D functions again

@@ -67,13 +67,6 @@ else
 BUILD  = build
 BIN    = mvmpm
 endif
-# D3=1: the whole tree compiled for three dimensions on its own, into
-# build3 (mvmpm3), while the 3-D forms are written file by file
-ifeq ($(D3),1)
-BUILD  := $(BUILD)3
-BIN    := $(BUILD)/mvmpm3
-EXTRA_CFLAGS += -DDIM=3
-endif
 CFLAGS  = -std=c11 -pthread -D_POSIX_C_SOURCE=200809L $(WARN) $(OPT) -MMD -MP \
           $(EXTRA_CFLAGS)
 LDLIBS  = $(shell pkg-config --libs $(PKGS) 2>/dev/null) -lm -pthread
@@ -117,11 +110,7 @@ DIMKEEP = lmvmpm_enter3 lmvmpm_loaded3 app_main3
 SRC3    = $(filter-out $(DIMFREE:%=src/%.c),$(SRC))
 OBJ3    = $(SRC3:src/%.c=$(BUILD)/d3/%.o)
 OBJ     = $(SRC:src/%.c=$(BUILD)/%.o)
-ifeq ($(D3),1)
-DIM3OBJ =
-else
 DIM3OBJ = $(BUILD)/dim3.o
-endif
 LIBOBJ  = $(filter-out $(BUILD)/app/entry.o,$(OBJ)) $(DIM3OBJ)
 UNIT    = $(wildcard tests/unit/test_*.c)
 UNITBIN = $(UNIT:tests/unit/%.c=$(BUILD)/unit/%)
@@ -181,11 +170,7 @@ $(BUILD)/unit/%: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
 # object's calls are renamed as dim3.o's names were (its .syms map)
 UNIT3    = test_diag_dim test_dimvec test_normals test_out_h5 test_particles \
            test_render_view test_walls
-ifeq ($(D3),1)
-UNIT3BIN =
-else
 UNIT3BIN = $(UNIT3:%=$(BUILD)/unit/%_3d)
-endif
 $(BUILD)/unit/%_3d: tests/unit/%.c $(LIBOBJ) tests/unit/unit.h | $(BUILD)/unit
 	$(CC) $(CFLAGS) -DDIM=3 $(INC_unit) -c $< -o $@.o
 	objcopy --redefine-syms=$(BUILD)/dim3.o.syms $@.o
@@ -233,7 +218,7 @@ pbx-shear: $(BIN)
 	@echo "running in the background; progress in out/pbx_shear.log"
 
 clean:
-	rm -rf build build-san build-tsan build-fuzz build3 mvmpm
+	rm -rf build build-san build-tsan build-fuzz mvmpm
 
 # The Lua module for a stock interpreter: the engine's objects built again
 # position-independent, linked without liblua (the interpreter has it;

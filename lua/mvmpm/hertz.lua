@@ -7,9 +7,10 @@
 -- The load is the weight F = m g; the body's own compression under the
 -- weight away from the contact enters only through R's far field (a
 -- correction of order a / R).  The contact radius a is read from the
--- floor's traction, as the particles of the bottom layer (those whose
--- lowest corner lies within a quarter of a particle spacing of the wall)
--- carry it, in two ways:
+-- particles in contact, those whose centre lies within 3/4 of a particle
+-- spacing hp = h / ppc of the wall (a touching particle's centre is half
+-- a spacing up, less its compression; the next layer starts a spacing
+-- and a half up), in two ways:
 --   a_m: from the second moment of the pressure: for Hertz's
 --        distribution <rho^2>_p = (2/5) a^2, so a_m = sqrt(5/2 <rho^2>_p)
 --        (a mean over the patch, not tied to the outermost particle)
@@ -18,6 +19,26 @@
 --        lattice: an honest bound to half a spacing
 local mvmpm = require "mvmpm"
 local M = {R = 0.5, K = 100, G = 50}
+
+-- Hertz's gap between the sphere and the flat outside the contact (r >= a):
+--   g(r) = r^2/(2R) - a^2/R + [(2a^2 - r^2) asin(a/r) + a sqrt(r^2 - a^2)] / (pi R)
+-- and the radius where it reaches q (what a count of the particles within
+-- q of the wall reads on the exact surface), by bisection
+function M.gap(a, r)
+  local R = M.R
+  if r <= a then return 0 end
+  return r * r / (2 * R) - a * a / R
+         + ((2 * a * a - r * r) * math.asin(a / r) + a * math.sqrt(r * r - a * a)) / (math.pi * R)
+end
+
+function M.reach(a, q)
+  local lo, hi = a, 2 * a
+  for _ = 1, 60 do
+    local mid = 0.5 * (lo + hi)
+    if M.gap(a, mid) < q then lo = mid else hi = mid end
+  end
+  return 0.5 * (lo + hi)
+end
 
 function M.estar()
   local K, G = M.K, M.G
@@ -29,7 +50,8 @@ end
 -- o: cells (per diameter), ar (a / R aimed at: sets g), ppc (2), shape,
 -- transfer, update, cfl, threads, tol (settle's), run (function(sim)
 -- that settles; default sim:settle).  Returns {F, W (weight), a_m, a_e,
--- a_h (Hertz's a for the measured F), delta (the top face's drop beyond
+-- a_h (Hertz's a for the weight), a_q (the radius where Hertz's gap is a
+-- quarter spacing: the contact count's reading of the exact surface), delta (the top face's drop beyond
 -- the free compression, not used), n (contact particles), ok, t, cpu, particles}
 function M.run(o)
   local R = M.R
@@ -59,12 +81,11 @@ function M.run(o)
   local cpu = os.clock() - c0
   local mass = body:diag().mass
   local _, Fy = sim:wall_force("bottom")
-  local x, st, F = sim:particles("position"), sim:particles("stress"), sim:particles("F")
+  local x, st = sim:particles("position"), sim:particles("stress")
   local hp = h / ppc
   local s0, s2, n, re = 0, 0, 0, 0
   for i = 1, #x.x do
-    local low = x.y[i] - 0.5 * hp * math.abs(F.yy[i])
-    if low < 0.25 * hp then
+    if x.y[i] < 0.75 * hp then
       local p = -st.yy[i]
       local rho = math.sqrt((x.x[i] - c) ^ 2 + (x.z[i] - c) ^ 2)
       if p > 0 then s0, s2, n = s0 + p, s2 + p * rho * rho, n + 1 end
@@ -72,8 +93,9 @@ function M.run(o)
     end
   end
   local W = mass * g
-  return {F = Fy, W = W, a_m = math.sqrt(2.5 * s2 / s0), a_e = re + 0.5 * hp,
-          a_h = (3 * W * R / (4 * Es)) ^ (1 / 3), n = n, ok = ok, t = t, cpu = cpu,
+  local a_h = (3 * W * R / (4 * Es)) ^ (1 / 3)
+  return {F = Fy, W = W, a_m = math.sqrt(2.5 * s2 / s0), a_e = re + 0.5 * hp, a_h = a_h,
+          a_q = M.reach(a_h, 0.25 * hp), n = n, ok = ok, t = t, cpu = cpu,
           particles = #x.x, h = h, mass = mass, m_exact = m}
 end
 

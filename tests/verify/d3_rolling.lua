@@ -62,3 +62,11 @@ do
   V.near("linear, 8 cells: energy residual / potential drop",
          r.e.residual / (r.e.initial - r.e.potential), 0, 0.02)
 end
+
+V.case "3-D rolling is deterministic: 1 and 2 threads give the same bits"
+do
+  local a = I.run {cells = 8, deg = 25, mu = "stick", threads = 1}
+  local b = I.run {cells = 8, deg = 25, mu = "stick", threads = 2}
+  V.holds("rolling a, spin and residual equal at 1 and 2 threads",
+          a.a == b.a and a.alpha == b.alpha and a.e.residual == b.e.residual, a.a - b.a)
+end

@@ -322,7 +322,11 @@ static int restart_prepare(lua_State *L, runopts *o, ckpt *c, char *outdir,
     fprintf(stderr, "%s: %s\n", progname, err);
     return -1;
   }
-  if (out_h5_file_dim(path) == APP_OTHER) return APP_REDO;
+  /* a regular file only: a FIFO would block its reader (ckpt_read
+  ** refuses it below) */
+  if (stat(path, &st) == 0 && S_ISREG(st.st_mode) &&
+      out_h5_file_dim(path) == APP_OTHER)
+    return APP_REDO;
   if (ckpt_read(c, path, err, sizeof err)) {
     fprintf(stderr, "%s: %s\n", progname, err);
     return -1;

@@ -8,6 +8,7 @@
 ** (render_png.h); --domain is then the window in the picture's axes.
 */
 #include <math.h>
+#include <sys/stat.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -152,7 +153,12 @@ int render_cmd(int argc, char **argv) {
   }
   if (!snap) return usage_error("no snapshot given", NULL);
   /* a snapshot of the other dimension is drawn by that dimension's code */
-  if (out_h5_file_dim(snap) == LSIM_OTHER_DIM) return APP_REDO;
+  {
+    struct stat st; /* a regular file only: a FIFO would block */
+    if (stat(snap, &st) == 0 && S_ISREG(st.st_mode) &&
+        out_h5_file_dim(snap) == LSIM_OTHER_DIM)
+      return APP_REDO;
+  }
   if (render_view_axes(o.axis, &h, &u, &along, err, sizeof err)) {
     fprintf(stderr, "%s: --axis: %s\n", prog, err);
     return 2;

@@ -40,7 +40,8 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
     imp[e] = 0;
   }
   dn = sign * dp[d];
-  if (!(dn > 0)) return 0;
+  /* a mirror plane pulls as it pushes */
+  if (!(dn > 0) && !(sd->mirror && dn < 0)) return 0;
   if (gap > 0) { /* contact_gap = "step": only the overlap of the step */
     double reach = dn / m * s->dt;
     if (!(reach > gap)) return 0;
@@ -97,7 +98,7 @@ static void wall_line(sim *s, int k, int line, int first) {
     double imp[DIM];
     int e;
     unsigned char *act = sd->acted + (size_t)(line - first) * nf + j;
-    double gap = s->gap_check ? -sd->ext[j] : 0;
+    double gap = s->gap_check && !sd->mirror ? -sd->ext[j] : 0;
     *act = 0;
     if (g->m[n] <= s->mcut) continue;
     if (gap > 0 && !s->gap_step) continue;
@@ -551,7 +552,8 @@ void boundary_apply(sim *s) {
     int line, first, last;
     if (s->sides[k].kind != SIDE_WALL) continue;
     wall_lines(g, k, &first, &last);
-    if (s->wall_rule != WALL_NODE) {
+    /* a mirror plane holds every node on it: no patches */
+    if (s->wall_rule != WALL_NODE && !s->sides[k].mirror) {
       if (!heights && s->wall_rule == WALL_COUPLE) { patch_heights(s); heights = 1; }
       wall_patches(s, k, first, last);
       continue;
@@ -629,18 +631,16 @@ void boundary_normal_set(sim *s, double *const a[DIM],
                          double *const sa[DIM], int vel) {
   grid *g = &s->g;
   int k;
-  if (s->wall_rule != WALL_NODE) {
-    for (k = 0; k < NSIDES; k++)
-      if (s->sides[k].kind == SIDE_WALL)
-        patch_normal_side(s, k, a, sa, vel ? s->sides[k].v[k / 2] : 0.0);
-    return;
-  }
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
     int d = k / 2, line, first, last;
     double v = vel ? sd->v[d] : 0.0;
     size_t j;
     if (sd->kind != SIDE_WALL) continue;
+    if (s->wall_rule != WALL_NODE && !sd->mirror) {
+      patch_normal_side(s, k, a, sa, v);
+      continue;
+    }
     wall_lines(g, k, &first, &last);
     for (line = first; line <= last; line++)
       for (j = 0; j < sd->next; j++) {

@@ -52,6 +52,10 @@ enum release_kind { RELEASE_OPEN, RELEASE_CONTACT };
 
 typedef struct side {
   int kind;
+  int mirror;        /* a wall of kind "symmetry": the normal velocity is
+                     ** held at 0 both ways (the material may not leave
+                     ** the plane either), no friction: the mirror plane of
+                     ** a symmetric scene */
   double mu;         /* Coulomb friction; INFINITY sticks */
   double v[DIM];     /* wall velocity (tangential part moves the wall) */
   double *ext;       /* reach of material toward the wall per column (node

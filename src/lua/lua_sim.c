@@ -103,9 +103,12 @@ void lsim_check_every(lua_State *L, const char *what, double every,
                  "(at most %.0e): give at least %g", what, every, span / every,
               span, LSIM_MAX_EVENTS, span / LSIM_MAX_EVENTS);
 }
-static const char *const side_kinds[] = {"free", "wall", "periodic", NULL};
+static const char *const side_kinds[] = {"free", "wall", "periodic",
+                                         "symmetry", NULL};
+#define SIDE_SYMMETRY 3 /* a wall with mirror set (sim.h) */
 
-/* one side: "wall" | "free" | "periodic" | {"wall", friction=, velocity=} */
+/* one side: "wall" | "free" | "periodic" | "symmetry" |
+** {"wall", friction=, velocity=} */
 static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
                       int *periodic) {
   static const char *const keys[] = {"friction", "velocity", NULL};
@@ -121,7 +124,7 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
     lua_replace(L, idx);
   }
   if (!lua_istable(L, idx))
-    luaL_error(L, "%s must be \"wall\", \"free\", \"periodic\" or a table "
+    luaL_error(L, "%s must be \"wall\", \"free\", \"periodic\", \"symmetry\" or a table "
                   "{\"wall\", friction = mu, velocity = {%s}}", what,
                DIM == 2 ? "vx, vy" : "vx, vy, vz");
   chk_keys(L, idx, what, keys);
@@ -130,7 +133,8 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
   kind = chk_option(L, idx, what, "kind", SIDE_WALL, side_kinds);
   lua_pushnil(L);
   lua_setfield(L, idx, "kind");
-  sd->kind = kind;
+  sd->mirror = kind == SIDE_SYMMETRY;
+  sd->kind = sd->mirror ? SIDE_WALL : kind;
   periodic[k] = kind == SIDE_PERIODIC;
   if (kind != SIDE_WALL) {
     lua_getfield(L, idx, "friction");

@@ -12,7 +12,7 @@
 #   make pbx-scale the PBX grain bed's cost against its grain count (a few minutes)
 #   make study     what accuracy costs in time: studies/*.lua, CSVs in out/study,
 #                  plots in docs/figures/accuracy_*.png (docs/accuracy.md)
-#   make check-paraview  ParaView's three XDMF readers open a run's XDMF (installs
+#   make check-paraview  ParaView's three XDMF readers open a 2-D and a 3-D run's XDMF (installs
 #                  Debian's paraview first: make deps-paraview)
 #   make install   PREFIX/bin/mvmpm, the Lua modules, mvmpm.so for a stock lua5.4,
 #                  the manual mvmpm(1); PREFIX=/usr/local, DESTDIR for staging
@@ -297,7 +297,9 @@ FORCE:
 # ParaView (Debian's paraview, installed by make deps-paraview; not a
 # build dependency) opens a run's XDMF series with each of its three
 # XDMF readers, and each must see every particle and every array of
-# every snapshot, bit for bit
+# every snapshot, bit for bit: a 2-D series (the cylinder's bounce, 208
+# particles) and a 3-D one (a ball of 2,176 particles, five snapshots),
+# each with the arrays of its dimension named (check_xdmf.py --dim)
 PV_READERS = XDMFReader Xdmf3ReaderS Xdmf3ReaderT
 deps-paraview:
 	@if [ "$$(id -u)" = 0 ]; then SUDO=; else SUDO=sudo; fi; \
@@ -308,7 +310,12 @@ check-paraview: $(BIN) deps-paraview
 	./$(BIN) run scenarios/cylinder_bounce.lua --set friction=0.1 --out build/check-paraview --quiet
 	@for r in $(PV_READERS); do \
 	  pvbatch tests/tools/check_xdmf.py build/check-paraview/particles.xmf \
-	    $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done) --reader $$r || exit 1; \
+	    $$(for f in build/check-paraview/particles_*.h5; do printf '208 '; done) --reader $$r --dim 2 || exit 1; \
+	done
+	./$(BIN) run scenarios/sphere_bounce3.lua --set t_end=2 --set every=0.5 --out build/check-paraview/d3 --quiet
+	@for r in $(PV_READERS); do \
+	  pvbatch tests/tools/check_xdmf.py build/check-paraview/d3/particles.xmf \
+	    $$(for f in build/check-paraview/d3/particles_*.h5; do printf '2176 '; done) --reader $$r --dim 3 || exit 1; \
 	done
 
 # the granular shear cell (docs/shear.md) at the report's resolution, both

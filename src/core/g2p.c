@@ -278,8 +278,8 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
         for (a = 0; a < DIM; a++) {
           uu[a] = nv[a];
           if (apic) {
-            double cr = 0;
-            for (c = 0; c < DIM; c++) cr += bm[a * DIM + c] * r[c][k];
+            double cr = bm[a * DIM] * r[0][k];
+            for (c = 1; c < DIM; c++) cr += bm[a * DIM + c] * r[c][k];
             uu[a] += cr;
           }
           gp[a][n] += wm * uu[a];
@@ -335,8 +335,8 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
       for (a = 0; a < DIM; a++) {
         uu[a] = nv[a];
         if (apic) {
-          double cr = 0;
-          for (c = 0; c < DIM; c++) cr += C[a * DIM + c][i] * r[c][k];
+          double cr = C[a * DIM][i] * r[0][k];
+          for (c = 1; c < DIM; c++) cr += C[a * DIM + c][i] * r[c][k];
           uu[a] += cr;
         }
         gp[a][n] += wm * uu[a];
@@ -496,20 +496,34 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   box_init(&bx, g, s->gravity);
   for (i = i0; i < i1; i++) {
     double x[DIM], v[DIM] = {0}, l[NTENS] = {0};
-    int32_t f = bd[ps->body[i]].field;
+    int32_t f = bd[ps->body[i]].field, slot[STENCIL_MAX];
     int k;
     for (a = 0; a < DIM; a++) x[a] = ps->x[a][i];
     stencil_eval(&geo, kind, x, lp, &st);
+    /* the velocity and the gradient in two loops over the nodes: each
+    ** sum in the same order as in one, with fewer sums live at once (one
+    ** loop over 9 or 27 nodes, unrolled, ran out of registers); the
+    ** first finds the slots, the second reuses them */
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
-      double w = st.w[k], uu[DIM], q[DIM];
+      double q[DIM];
       if (shared && g->head[n] >= 0) {
-        int32_t sl = grid_slot(g, n, f);
-        for (a = 0; a < DIM; a++) { uu[a] = g->sp[a][sl]; q[a] = g->sq[a][sl]; }
+        int32_t sl = slot[k] = grid_slot(g, n, f);
+        for (a = 0; a < DIM; a++) q[a] = g->sq[a][sl];
       } else {
-        for (a = 0; a < DIM; a++) { uu[a] = gp[a][n]; q[a] = gq[a][n]; }
+        if (shared) slot[k] = -1;
+        for (a = 0; a < DIM; a++) q[a] = gq[a][n];
       }
-      for (a = 0; a < DIM; a++) v[a] += w * q[a];
+      for (a = 0; a < DIM; a++) v[a] += st.w[k] * q[a];
+    }
+    for (k = 0; k < st.n; k++) {
+      int32_t n = st.node[k];
+      double uu[DIM];
+      if (shared && slot[k] >= 0) {
+        for (a = 0; a < DIM; a++) uu[a] = g->sp[a][slot[k]];
+      } else {
+        for (a = 0; a < DIM; a++) uu[a] = gp[a][n];
+      }
       for (a = 0; a < DIM; a++)
         for (c = 0; c < DIM; c++) l[a * DIM + c] += uu[a] * st.dw[c][k];
     }

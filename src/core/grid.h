@@ -128,7 +128,9 @@ static inline int32_t grid_node(const grid *g, const int i[DIM]) {
 /* the indices of stored node n, as grid_node made them */
 static inline void grid_ijk(const grid *g, int32_t n, int i[DIM]) {
   int d;
-  for (d = 0; d < DIM; d++) { i[d] = n % g->n[d]; n /= g->n[d]; }
+  /* the last index is what is left: no division for it */
+  for (d = 0; d < DIM - 1; d++) { i[d] = n % g->n[d]; n /= g->n[d]; }
+  i[DIM - 1] = n;
 }
 /* the nodes of the plane i_d = line (a line in 2-D): how many, and the
 ** j-th, with the other indices in grid_node's order */

@@ -82,14 +82,16 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
       double w = st.w[k], wm = w * mp, v[DIM], fo[DIM];
       if (split && !mine[k / rowlen]) continue;
       for (a = 0; a < DIM; a++) {
-        double sd = 0;
+        /* from the first product, not from 0: 0 + x is not x for the
+        ** compiler (signed zeros), and the add would cost every node */
+        double sd = sv[a][0] * st.dw[0][k];
         v[a] = v0[a];
         if (apic && mass) { /* the particle's affine velocity at the node */
-          double cr = 0;
-          for (b = 0; b < DIM; b++) cr += C[a * DIM + b][i] * r[b][k];
+          double cr = C[a * DIM][i] * r[0][k];
+          for (b = 1; b < DIM; b++) cr += C[a * DIM + b][i] * r[b][k];
           v[a] += cr;
         }
-        for (b = 0; b < DIM; b++) sd += sv[a][b] * st.dw[b][k];
+        for (b = 1; b < DIM; b++) sd += sv[a][b] * st.dw[b][k];
         fo[a] = wm * grav[a] - sd;
       }
       if (mass) {

@@ -175,7 +175,7 @@ STENCIL_INLINE int stencil_nodes(const grid *g, int kind, const double *x,
                                  int32_t *node) {
   int nw = shape_width(kind), a, k = 0, d, n = 1;
   int32_t idx[DIM][SHAPE_MAXW];
-  int i[DIM];
+  int i[DIM], t[DIM];
   for (d = 0; d < DIM; d++) {
     double xi = (x[d] - g->lo[d]) * g->inv_h + (g->periodic[d] ? 0 : g->pad);
     int i0 = kind == SHAPE_LINEAR  ? (int)floor(xi)
@@ -183,12 +183,14 @@ STENCIL_INLINE int stencil_nodes(const grid *g, int kind, const double *x,
                                    : (int)floor(xi - 0.5);
     for (a = 0; a < nw; a++) idx[d][a] = grid_wrap(g, d, i0 + a);
     n *= nw;
+    t[d] = 0;
   }
-  /* an odometer over the DIM indices, x fastest */
+  /* an odometer over the DIM indices, x fastest (counted up digit by
+  ** digit: the kind is not a constant here, and k % nw would divide) */
   for (k = 0; k < n; k++) {
-    int c = k;
-    for (d = 0; d < DIM; d++) { i[d] = idx[d][c % nw]; c /= nw; }
+    for (d = 0; d < DIM; d++) i[d] = idx[d][t[d]];
     node[k] = grid_node(g, i);
+    for (d = 0; d < DIM && ++t[d] == nw; d++) t[d] = 0;
   }
   return k;
 }

@@ -1,6 +1,7 @@
 """check_xdmf.py - open an mvmpm XDMF series in ParaView and check it.
 
 usage: pvbatch tests/tools/check_xdmf.py SERIES.xmf N0 [N1 ...] [--reader R]
+                                        [--dim D]
 
 N0, N1, ... are the particle counts expected at each time step, in order.
 For every step the script updates ParaView's reader at that time and
@@ -18,6 +19,12 @@ index forgets is caught:
                                           the snapshot's order
 Extra arrays in ParaView are an error too.  Without h5py, only the names
 listed in the .xmf are checked (and the script says so).
+
+--dim D: the series must be D-dimensional (the snapshots' dim), the
+points must carry D coordinates from the snapshot (in 3-D z is checked
+like x and y), and ParaView must show velocity with D components (3 with
+the XDMF 2 reader), stress with its 4 (2-D: xx, yy, xy, zz) or 6 (3-D)
+and F with D x D: the arrays a 3-D series is read for, named.
 
 R is the ParaView reader: XDMFReader (the XDMF 2 reader, the default),
 Xdmf3ReaderS or Xdmf3ReaderT; each must see every array.
@@ -49,17 +56,23 @@ def fail(msg):
 
 def usage(msg):
     print("check_xdmf: " + msg)
-    print("usage: pvbatch check_xdmf.py SERIES.xmf N0 [N1 ...] [--reader R]")
+    print("usage: pvbatch check_xdmf.py SERIES.xmf N0 [N1 ...] [--reader R] [--dim D]")
     sys.exit(2)
 
 
 def parse_args(argv):
     reader = "XDMFReader"
+    dim = None
     rest = []
     i = 0
     while i < len(argv):
         if argv[i] == "--reader" and i + 1 < len(argv):
             reader = argv[i + 1]
+            i += 2
+        elif argv[i] == "--dim" and i + 1 < len(argv):
+            if argv[i + 1] not in ("2", "3"):
+                usage("--dim must be 2 or 3")
+            dim = int(argv[i + 1])
             i += 2
         else:
             rest.append(argv[i])
@@ -70,7 +83,7 @@ def parse_args(argv):
         counts = [int(x) for x in rest[1:]]
     except ValueError:
         usage("expected counts must be integers")
-    return rest[0], counts, reader
+    return rest[0], counts, reader, dim
 
 
 def steps_of(xmf):
@@ -111,7 +124,7 @@ def expected_arrays(h5path, reader):
             else:
                 out[name] = (a.shape[1], a)
         pos = f["position"][()]
-    return out, pos
+    return out, pos, dim
 
 
 def same_bits(a, b):
@@ -135,7 +148,23 @@ def unstructured(data):
     return data
 
 
-def check_step(i, t, n, heavy, names, grid, base, reader):
+def check_dim(i, want_dim, dim, pos, found, reader):
+    """the arrays a series of want_dim dimensions is read for"""
+    if dim != want_dim:
+        fail("step %d: the snapshot is %d-D, expected %d-D" % (i, dim, want_dim))
+        return
+    if pos.ndim != 2 or pos.shape[1] != dim:
+        fail("step %d: position has shape %s, expected (N, %d)"
+             % (i, pos.shape, dim))
+    need = {"velocity": 3 if reader == "XDMFReader" else dim,
+            "stress": 4 if dim == 2 else 6, "F": dim * dim}
+    for nm, nc in sorted(need.items()):
+        if found.get(nm) != nc:
+            fail("step %d: %s seen with %s components, expected %d"
+                 % (i, nm, found.get(nm), nc))
+
+
+def check_step(i, t, n, heavy, names, grid, base, reader, want_dim):
     npts, ncell = grid.GetNumberOfPoints(), grid.GetNumberOfCells()
     pd = grid.GetPointData()
     found = {pd.GetArrayName(k): pd.GetArray(k).GetNumberOfComponents()
@@ -160,7 +189,9 @@ def check_step(i, t, n, heavy, names, grid, base, reader):
         for nm in sorted(set(want) - set(found)):
             fail("step %d: array %s listed in the .xmf but not loaded" % (i, nm))
         return
-    want, pos = expected_arrays(os.path.join(base, heavy), reader)
+    want, pos, dim = expected_arrays(os.path.join(base, heavy), reader)
+    if want_dim is not None:
+        check_dim(i, want_dim, dim, pos, found, reader)
     for nm in sorted(set(want) - set(found)):
         fail("step %d: array %s missing" % (i, nm))
     for nm in sorted(set(found) - set(want)):
@@ -191,7 +222,7 @@ def open_reader(name, xmf):
 
 
 def main():
-    xmf, counts, reader_name = parse_args(sys.argv[1:])
+    xmf, counts, reader_name, want_dim = parse_args(sys.argv[1:])
     if not os.path.isfile(xmf):
         usage("%s: no such file" % xmf)
     steps = steps_of(xmf)
@@ -212,7 +243,7 @@ def main():
             fail("step %d: reader gave no single grid" % i)
             continue
         _, heavy, names = steps[i] if i < len(steps) else (t, None, [])
-        check_step(i, t, n, heavy, names, grid, base, reader_name)
+        check_step(i, t, n, heavy, names, grid, base, reader_name, want_dim)
     print("check_xdmf: %s" % ("ok" if not failures else
                               "%d mismatches" % len(failures)))
     sys.exit(1 if failures else 0)

@@ -1,17 +1,13 @@
--- 3-D impacts.  (1) The bouncing cylinder's sphere (scenarios/
+-- 3-D impacts on walls.  The bouncing cylinder's sphere (scenarios/
 -- sphere_bounce.lua): a unit-diameter elastic sphere (K = 1, G = 0.5,
 -- density 1) at (0.1, 0.1, 0.1) in a 3 x 3 x 3 box with frictionless
 -- walls meets the right, front and top walls one at a time (t = 2, 6,
 -- 10).  Walls do no work: the total energy (kinetic + strain) at t = 14,
 -- after the third impact, must equal the discrete initial energy; each
 -- wall stops only its normal, so the momentum along the axes not hit yet
--- is kept to round-off, and the spin stays near zero.  (2) Two spheres
--- meeting head on and obliquely, each on its own velocity field
--- (frictionless multi-field contact): the total momentum vector is kept
--- to round-off, they separate with their nearest particles moving apart
--- and no particle of one inside the other, and the energy change is
--- reported per resolution.  Larger grids and the other schemes:
--- studies/d3_bounce.lua, docs/accuracy.md.
+-- is kept to round-off, and the spin stays near zero.  Two spheres
+-- colliding: tests/verify/d3_spheres.lua.  Larger grids and the other
+-- schemes: studies/d3_bounce.lua, docs/accuracy.md.
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 

@@ -27,7 +27,6 @@ local P = mvmpm.params {
   xpic = 2,            -- XPIC's order (2 or 3)
   wall_contact = "node", -- or "patch", "couple"
   contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
-  output = true,       -- write snapshots (false: none, for tests)
 }
 
 local h = 1 / P.cells
@@ -56,7 +55,5 @@ sim:body {
   material = ball,
   velocity = {0.1, 0.1, 0.1},
 }
-if P.output then
-  sim:output {dir = "out/sphere_bounce", every = 0.5, csv_every = 10}
-end
+sim:output {dir = "out/sphere_bounce", every = 0.5, csv_every = 10}
 return sim

@@ -31,7 +31,7 @@ local case = {
   run = function(s, clock)
     local sim = mvmpm.load("scenarios/sphere_bounce.lua",
       {cells = s.cells, ppc = s.ppc, shape = s.shape, transfer = s.transfer, flip = s.flip,
-       update = s.update, cfl = s.cfl, t_end = 14, output = false})
+       update = s.update, cfl = s.cfl, t_end = 14})
     local b = sim:bodies()[1]
     local e0 = sim:energy().total
     clock.run(sim, 14)

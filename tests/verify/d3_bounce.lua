@@ -16,7 +16,7 @@ local function norm3(w) return math.sqrt(w[1]^2 + w[2]^2 + w[3]^2) end
 -- the sphere bounce at one resolution and scheme: energy error at t = 14,
 -- momenta between impacts, the largest spin |omega| R / |v| seen
 local function bounce(cells, o)
-  local p = {cells = cells, output = false}
+  local p = {cells = cells}
   for k, v in pairs(o or {}) do p[k] = v end
   local c0 = os.clock()
   local sim = mvmpm.load("scenarios/sphere_bounce.lua", p)

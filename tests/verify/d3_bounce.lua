@@ -56,6 +56,10 @@ end
 local s8 = def[1].sim
 V.holds("the defaults are linear hats, MUSL, FLIP",
   s8.shape == "linear" and s8.update == "musl" and s8.transfer == "flip")
+-- measured -2.24 / -1.84 / -0.66 %: the 2 % wanted at 8 cells is missed
+-- by the defaults and by every other scheme that also falls with
+-- refinement (studies/d3_bounce.lua, docs/accuracy.md); asserted is the
+-- fall, and 1 % at 16 cells
 V.info(string.format("defaults, |energy change| <= 2 %% at 8 cells: %s",
   math.abs(def[1].energy) <= 0.02 and "met" or "NOT met"), def[1].energy)
 V.below("|energy change| falls 8 -> 12 cells", math.abs(def[2].energy), math.abs(def[1].energy))

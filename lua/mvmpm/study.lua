@@ -146,6 +146,7 @@ local shape_name = {linear = "linear", gimp = "GIMP", bspline2 = "B-spline"}
 function S.scheme(s, vary)
   local tr
   if s.transfer == "apic" then tr = "APIC"
+  elseif s.transfer == "xpic" then tr = "XPIC"
   elseif s.flip == 1 then tr = "FLIP"
   elseif s.flip == 0 then tr = "PIC"
   else tr = string.format("FLIP%g", s.flip) end

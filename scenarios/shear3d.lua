@@ -43,6 +43,8 @@ local P = mvmpm.params {
   yield = 0.05,        -- grains' von Mises yield stress (G/10)
   binder_K = 0.25, binder_G = 0.005,   -- the 2-D cell's binder
   binder_G1 = 0.02, binder_tau1 = 1.0, binder_G2 = 0.02, binder_tau2 = 10.0,
+  shape = "linear",    -- or "gimp", "bspline2"
+  update = "musl",     -- or "usl", "usavg"
   record = 5,          -- steps between rows of shear3d.csv
   snapshots = 4,       -- snapshots over the run
 }
@@ -91,7 +93,7 @@ end
 
 local sim = mvmpm.sim {
   dim = 3, domain = {x = {0, L}, y = {0, L}, z = {0, L}}, cell = h, ppc = P.ppc,
-  t_end = t_end,
+  t_end = t_end, shape = P.shape, update = P.update,
   sides = {
     left = {"wall", friction = "stick", velocity = function(t) return 0, -speed(t), 0 end},
     right = {"wall", friction = "stick", velocity = function(t) return 0, speed(t), 0 end},

@@ -815,6 +815,7 @@ local function bed3(p)
     mass_fraction = mass_grains / total,
     mass_fraction_hmx = rhoH * (placed + unresolved) / total,
     hmx_mass_target = p.hmx_mass or 0,
+    folded = fold / V,                             -- folded fines, by volume
     extra = extra / V,                             -- HMX added to reach hmx_mass, by volume
     folded_mass = rhoH * fold,                     -- kg
     folded_mass_fraction = rhoH * fold / total,
@@ -968,7 +969,7 @@ local function summary3(bed)
   t[#t + 1] = string.format(
     "all HMX (with %.4f folded and %.4f added to reach hmx_mass %s, by volume): "
     .. "%.4f by volume, %.4f by mass",
-    s.packing_hmx - s.packing - s.extra, s.extra,
+    s.folded, s.extra,
     s.hmx_mass_target > 0 and string.format("%.4g", s.hmx_mass_target) or "(none)",
     s.packing_hmx, s.mass_fraction_hmx)
   t[#t + 1] = string.format(

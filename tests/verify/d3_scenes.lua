@@ -67,6 +67,23 @@ local function shear_run(params, label, residual_limit)
   local held = 0
   for _, b in ipairs(sim:bodies()) do held = held + b:diag().n end
   V.near(label .. ": particles held by the bodies / sim.n", held / sim.n, 1, 0)
+  -- each particle lies in its own sphere (nearest image in y and z) and
+  -- in no other; binder particles in none
+  local x, body = sim:particles("position"), sim:particles("body")
+  local grains, of = S.bed.grains, {}
+  for i, b in ipairs(sim:bodies()) do if grains[i] and b.name ~= "binder" then of[b.id] = i end end
+  local L = S.L
+  local function near(d) return d - L * math.floor(d / L + 0.5) end
+  local wrong = 0
+  for p = 1, #body do
+    local mine = of[body[p]]
+    for i, g in ipairs(grains) do
+      local dx, dy, dz = x.x[p] - g.x, near(x.y[p] - g.y), near(x.z[p] - g.z)
+      local inside = dx * dx + dy * dy + dz * dz < g.r * g.r
+      if inside ~= (mine == i) then wrong = wrong + 1 end
+    end
+  end
+  V.near(label .. ": particles outside their sphere or inside another", wrong, 0, 0)
   local bad, steps = 0, 0
   local pz_err = 0
   local free_mass = 0

@@ -119,6 +119,10 @@ end
 
 local KEYS = {}
 for k in pairs(DEFAULTS) do KEYS[k] = true end
+-- 3-D only (see the 3-D part below)
+local KEYS3 = {z0 = true, depth = true, hmx_mass = true}
+KEYS.dim = true
+for k in pairs(KEYS3) do KEYS[k] = true end
 
 local function check(spec, level)
   if type(spec) ~= "table" then bad(level + 1, "expects a table of fields") end
@@ -131,10 +135,27 @@ local function check(spec, level)
     end
   end
   local p = {}
+  p.dim = spec.dim or require("mvmpm").dim
+  if p.dim ~= 2 and p.dim ~= 3 then
+    bad(level + 1, "field 'dim' must be 2 or 3 (got %s)", tostring(spec.dim))
+  end
+  if p.dim == 2 then
+    for k in pairs(KEYS3) do
+      if spec[k] ~= nil then bad(level + 1, "field '%s' is for 3-D beds only (dim = 3)", k) end
+    end
+  end
   p.x0 = number(spec, "x0", -math.huge, math.huge, level + 1)
   p.y0 = number(spec, "y0", -math.huge, math.huge, level + 1)
   p.width = number(spec, "width", 0, math.huge, level + 1, true)
   p.height = number(spec, "height", 0, math.huge, level + 1, true)
+  if p.dim == 3 then
+    p.z0 = spec.z0 == nil and 0 or number(spec, "z0", -math.huge, math.huge, level + 1)
+    p.depth = spec.depth == nil and p.width or number(spec, "depth", 0, math.huge, level + 1, true)
+    if spec.hmx_mass ~= nil then
+      p.hmx_mass = number(spec, "hmx_mass", 0, 1, level + 1, true)
+      if p.hmx_mass >= 1 then bad(level + 1, "field 'hmx_mass' must be in (0, 1) (got %g)", p.hmx_mass) end
+    end
+  end
   p.packing = number(spec, "packing", 0, 0.9, level + 1, true)
   p.coarse = class(spec, "coarse", level + 1)
   p.fine = class(spec, "fine", level + 1)
@@ -160,10 +181,13 @@ local function check(spec, level)
   for _, key in ipairs {"coarse", "fine"} do
     local c = p[key]
     local dmax = c.mean * exp(3 * c.spread)
-    if dmax + 2 * p.gap > 0.5 * min(p.width, p.height) then
-      bad(level + 1, "%s grains (mean %g, spread %g) reach %g, too large for a %g x %g rectangle "
-          .. "(the largest must be under half the shorter side)",
-          key, c.mean, c.spread, dmax, p.width, p.height)
+    local short = min(p.width, p.height, p.depth or math.huge)
+    if dmax + 2 * p.gap > 0.5 * short then
+      bad(level + 1, "%s grains (mean %g, spread %g) reach %g, too large for a %s "
+          .. "(the largest must be under half the shortest side)",
+          key, c.mean, c.spread, dmax,
+          p.dim == 3 and string.format("%g x %g x %g box", p.width, p.height, p.depth)
+                      or string.format("%g x %g rectangle", p.width, p.height))
     end
   end
   if p.mass_ratio == 0 and p.packing > 0 and p.coarse.mean < p.min_diameter then
@@ -453,7 +477,8 @@ end
 
 ---------------------------------------------------------------- the bed
 
-local function histogram(all, nb)
+-- (measure: a grain's area, or its volume in 3-D, from its diameter)
+local function histogram(all, nb, measure)
   local lo, hi = math.huge, 0
   for _, d in ipairs(all) do lo, hi = min(lo, d.d), max(hi, d.d) end
   if hi <= lo then hi = lo * 1.0001 end
@@ -468,14 +493,373 @@ local function histogram(all, nb)
     local bin = h[k]
     bin[d.class] = bin[d.class] + 1
     if d.folded then bin.folded = bin.folded + 1 end
-    bin.area = bin.area + 0.25 * pi * d.d * d.d
+    bin.area = bin.area + (measure and measure(d.d) or 0.25 * pi * d.d * d.d)
   end
   return h
+end
+
+------------------------------------------------------------ 3-D beds
+--
+-- With dim = 3 (a field, or the module's dimension: mvmpm.sim{dim = 3}
+-- switches it) the bed is one of spheres in the box [x0, x0 + width] x
+-- [y0, y0 + height] x [z0, z0 + depth], periodic in y and z (a sphere
+-- across a seam continues on the other side, as the engine seeds it)
+-- and walled in x.  Drawing, folding and growth are those of the discs
+-- with volumes for areas; the sweeps push along the line of centres in
+-- three dimensions.  The optional hmx_mass asks for the HMX mass
+-- fraction of the whole composite: what the resolved spheres and the
+-- folded fines leave short of it is added to the binder as unresolved
+-- HMX (more "dirty binder"), reported as `extra`; a target the resolved
+-- grains already pass is refused.  Random close packing of equal
+-- spheres is about 0.64, and a bimodal bed with a size ratio of five
+-- reaches about 0.7 in this method (docs/pbx.md), so a PBX 9501 loading
+-- (0.93 by volume) is reached only with the unresolved fines.
+
+-- the separation of two centres along a periodic axis of length L
+local function near(d, L) return d - L * floor(d / L + 0.5) end
+
+local function sizes3(p, r)
+  local target = p.packing * p.width * p.height * p.depth
+  local grains, folded = {}, {coarse = {n = 0, area = 0}, fine = {n = 0, area = 0}, list = {}}
+  local vol = {coarse = 0, fine = 0}
+  local placed = 0
+  while placed < target do
+    local key
+    if p.mass_ratio == 0 then key = "fine"
+    elseif vol.fine == 0 and vol.coarse == 0 then key = "coarse"
+    else key = vol.coarse < p.mass_ratio * vol.fine and "coarse" or "fine" end
+    local d = draw(r, p[key])
+    local v = pi / 6 * d * d * d
+    if d >= p.min_diameter and placed + v > target and placed + v - target > target - placed then
+      break
+    end
+    vol[key] = vol[key] + v
+    if d < p.min_diameter then
+      folded[key].n = folded[key].n + 1
+      folded[key].area = folded[key].area + v
+      folded.list[#folded.list + 1] = {d = d, class = key, folded = true}
+    else
+      grains[#grains + 1] = {r = 0.5 * d, class = key}
+      placed = placed + v
+    end
+  end
+  return grains, folded, vol
+end
+
+-- bins over the box; a sphere is listed in every bin its cube (radius at
+-- its scale + reach) touches, across the seams in y and z
+local function binner3(p, size)
+  local b = {}
+  b.nx = max(1, floor(p.width / size))
+  b.ny = max(1, floor(p.height / size))
+  b.nz = max(1, floor(p.depth / size))
+  b.sx, b.sy, b.sz = p.width / b.nx, p.height / b.ny, p.depth / b.nz
+  function b.build(g, reach)
+    local cells = {}
+    local nx, ny, nz = b.nx, b.ny, b.nz
+    for i = 1, #g do
+      local d = g[i]
+      local rr = d.s * d.r + reach
+      local i0 = max(0, floor((d.x - rr - p.x0) / b.sx))
+      local i1 = min(nx - 1, floor((d.x + rr - p.x0) / b.sx))
+      local j0 = floor((d.y - rr - p.y0) / b.sy)
+      local j1 = floor((d.y + rr - p.y0) / b.sy)
+      local k0 = floor((d.z - rr - p.z0) / b.sz)
+      local k1 = floor((d.z + rr - p.z0) / b.sz)
+      if j1 - j0 >= ny then j1 = j0 + ny - 1 end
+      if k1 - k0 >= nz then k1 = k0 + nz - 1 end
+      for k = k0, k1 do
+        local plane = (k % nz) * ny
+        for j = j0, j1 do
+          local row = (plane + j % ny) * nx
+          for ii = i0, i1 do
+            local c = row + ii + 1
+            local list = cells[c]
+            if not list then list = {}; cells[c] = list end
+            list[#list + 1] = i
+          end
+        end
+      end
+      d.i0, d.i1, d.j0, d.j1, d.k0, d.k1 = i0, i1, j0, j1, k0, k1
+    end
+    return cells
+  end
+  return b
+end
+
+local function confine3(p, d)
+  local lo = p.x0 + d.s * d.r + 1e-12 * p.width
+  local hi = p.x0 + p.width - d.s * d.r - 1e-12 * p.width
+  if d.x < lo then d.x = lo elseif d.x > hi then d.x = hi end
+  d.y = p.y0 + (d.y - p.y0) % p.height
+  d.z = p.z0 + (d.z - p.z0) % p.depth
+end
+
+-- one Gauss-Seidel sweep of the disc version, in 3-D
+local function sweep3(p, g, b, gap, stamp, pass)
+  local cells = b.build(g, 0.5 * gap)
+  b.cells, b.list = cells, g
+  local n = 0
+  local H, D = p.height, p.depth
+  local nx, ny, nz = b.nx, b.ny, b.nz
+  for i = 1, #g do
+    local a = g[i]
+    local mark = pass * (#g + 1) + i
+    for kk = a.k0, a.k1 do
+      local plane = (kk % nz) * ny
+      for j = a.j0, a.j1 do
+        local row = (plane + j % ny) * nx
+        for ii = a.i0, a.i1 do
+          local c = cells[row + ii + 1]
+          if c then
+            for q = 1, #c do
+              local k = c[q]
+              local o = g[k]
+              if k > i and stamp[k] ~= mark and not (a.fixed and o.fixed) then
+                stamp[k] = mark
+                local dx = o.x - a.x
+                local dy, dz = near(o.y - a.y, H), near(o.z - a.z, D)
+                local want = a.s * a.r + o.s * o.r + gap
+                local d2 = dx * dx + dy * dy + dz * dz
+                if d2 < want * want then
+                  local d = sqrt(d2)
+                  local push = want - d + (gap > 0 and gap or 1e-4 * want)
+                  n = n + 1
+                  a.hit, o.hit = pass, pass
+                  local ux, uy, uz = 1, 0, 0
+                  if d > 0 then ux, uy, uz = dx / d, dy / d, dz / d end
+                  local fa, fo = 0.5, 0.5
+                  if a.fixed then fa, fo = 0, 1 elseif o.fixed then fa, fo = 1, 0 end
+                  a.x, a.y, a.z = a.x - fa * push * ux, a.y - fa * push * uy, a.z - fa * push * uz
+                  o.x, o.y, o.z = o.x + fo * push * ux, o.y + fo * push * uy, o.z + fo * push * uz
+                  confine3(p, a)
+                  confine3(p, o)
+                end
+              end
+            end
+          end
+        end
+      end
+    end
+  end
+  return n
+end
+
+-- the room around (x, y, z): distance to the nearest sphere surface in
+-- the 3 x 3 x 3 bins around it, or to a wall, at most one bin
+local function room3(p, b, x, y, z, self)
+  local best = min(x - p.x0, p.x0 + p.width - x, b.sx, b.sy, b.sz)
+  local cells, g = b.cells, b.list
+  if not cells then return best end
+  local i = min(b.nx - 1, floor((x - p.x0) / b.sx))
+  local j = floor((y - p.y0) / b.sy)
+  local k = floor((z - p.z0) / b.sz)
+  for kk = k - 1, k + 1 do
+    local plane = (kk % b.nz) * b.ny
+    for jj = j - 1, j + 1 do
+      local row = (plane + jj % b.ny) * b.nx
+      for ii = max(0, i - 1), min(b.nx - 1, i + 1) do
+        local c = cells[row + ii + 1]
+        if c then
+          for q = 1, #c do
+            local o = g[c[q]]
+            if o ~= self then
+              local dx = x - o.x
+              local dy, dz = near(y - o.y, p.height), near(z - o.z, p.depth)
+              local rr = sqrt(dx * dx + dy * dy + dz * dz) - o.s * o.r
+              if rr < best then best = rr end
+            end
+          end
+        end
+      end
+    end
+  end
+  return best
+end
+
+local function seed_position3(p, b, d, r, tries)
+  local bx, by, bz, broom = nil, nil, nil, -math.huge
+  for _ = 1, tries do
+    local lo, span = p.x0 + d.s * d.r, p.width - 2 * d.s * d.r
+    local x = lo + span * r.uniform()
+    local y = p.y0 + p.height * r.uniform()
+    local z = p.z0 + p.depth * r.uniform()
+    local q = room3(p, b, x, y, z, d)
+    if q > broom then bx, by, bz, broom = x, y, z, q end
+  end
+  d.x, d.y, d.z = bx, by, bz
+end
+
+-- growth in stages, as grow() for discs: from the scale at which the
+-- spheres fill 0.25 of the box (random addition of spheres jams near
+-- 0.38) to full size
+local function grow3(p, g, b, gap, V, st, relocate)
+  local eff = 0
+  for _, d in ipairs(g) do eff = eff + pi / 6 * (2 * d.r + gap) ^ 3 end
+  eff = eff / V
+  local s = min(1, (0.25 / max(eff, 1e-12)) ^ (1 / 3))
+  for _, d in ipairs(g) do d.s = s; confine3(p, d) end
+  local step = 0.02
+  while true do
+    st.stages = st.stages + 1
+    local ok = false
+    for k = 1, (s < 1 and 100 or 2000) do
+      st.pass = st.pass + 1
+      st.sweeps = st.sweeps + 1
+      local n = sweep3(p, g, b, gap, st.stamp, st.pass)
+      if n == 0 then ok = true; break end
+      if k % 25 == 0 then
+        for _, d in ipairs(g) do
+          if d.hit == st.pass and relocate(d) then
+            confine3(p, d)
+            st.relocated = st.relocated + 1
+          end
+        end
+      end
+    end
+    if ok and s >= 1 then return true end
+    if ok then
+      s = min(1, s + step)
+      for _, d in ipairs(g) do d.s = s; confine3(p, d) end
+    elseif s < 1 and step > 0.0025 then
+      step = step / 2
+    else
+      return nil, s, eff
+    end
+  end
+end
+
+local function place3(p, g, r)
+  for i, d in ipairs(g) do d.order = i end
+  table.sort(g, function(a, b)
+    if a.r ~= b.r then return a.r > b.r end
+    return a.order < b.order
+  end)
+  local gap = p.gap * (1 + 1e-6)
+  local V = p.width * p.height * p.depth
+  local st = {stages = 0, sweeps = 0, pass = 0, stamp = {}, relocated = 0}
+  if #g == 0 then return true, nil, nil, st end
+  local mean = 0
+  for _, d in ipairs(g) do mean = mean + 2 * d.r end
+  mean = mean / #g
+  local b = binner3(p, max(2 * mean, (V / (8 * #g)) ^ (1 / 3)))
+  for _, d in ipairs(g) do d.s = 0.5 end
+  for _, d in ipairs(g) do seed_position3(p, b, d, r, 1) end
+  local ok, s, eff = grow3(p, g, b, gap, V, st, function(d)
+    if d.class == "fine" then seed_position3(p, b, d, r, 16) return true end
+  end)
+  if not ok then return nil, s, eff, st end
+  return true, nil, nil, st
+end
+
+local function bed3(p)
+  local r = rng(p.seed)
+  local g, folded, drawn = sizes3(p, r)
+  local ok, s, eff, st = place3(p, g, r)
+  if not ok then
+    bad(3, "could not place %d spheres at packing %g with gap %g: growth stalled at %.3f of "
+        .. "full size (at full size, with half the gap on every radius, the spheres would fill "
+        .. "%.3f of the box); lower packing or gap, or change the classes", #g, p.packing,
+        p.gap, s, eff)
+  end
+  local V = p.width * p.height * p.depth
+  local bed = {dim = 3, x0 = p.x0, y0 = p.y0, z0 = p.z0, width = p.width, height = p.height,
+               depth = p.depth, gap = p.gap, seed = p.seed, grains = {}, params = p}
+  local n, vol = {coarse = 0, fine = 0}, {coarse = 0, fine = 0}
+  local all, attached = {}, {left = 0, right = 0}
+  for i, d in ipairs(g) do
+    local side
+    if d.x - d.r - p.x0 < p.attach then side = "left"
+    elseif p.x0 + p.width - d.x - d.r < p.attach then side = "right" end
+    if side then attached[side] = attached[side] + 1 end
+    bed.grains[i] = {x = d.x, y = d.y, z = d.z, r = d.r, d = 2 * d.r, class = d.class,
+                     side = side}
+    n[d.class] = n[d.class] + 1
+    vol[d.class] = vol[d.class] + pi / 6 * (2 * d.r) ^ 3
+    all[#all + 1] = {d = 2 * d.r, class = d.class}
+  end
+  for _, d in ipairs(folded.list) do all[#all + 1] = d end
+  local placed = vol.coarse + vol.fine
+  local fold = folded.coarse.area + folded.fine.area
+  local rhoH, rhoB = p.density, p.binder_density
+  local binder_vol = V - placed                    -- binder + unresolved HMX
+  -- HMX the hmx_mass target adds to the binder: m_H / (m_H + m_B) = w
+  -- with m_H = rhoH (placed + fold + x), m_B = rhoB (binder_vol - fold - x)
+  local extra = 0
+  if p.hmx_mass then
+    local w = p.hmx_mass
+    local x = (w * rhoB * (binder_vol - fold) - (1 - w) * rhoH * (placed + fold))
+              / ((1 - w) * rhoH + w * rhoB)
+    if x < -1e-9 * V then
+      local have = rhoH * (placed + fold) / (rhoH * (placed + fold) + rhoB * (binder_vol - fold))
+      bad(3, "field 'hmx_mass' %g is below the %.4f the resolved and folded grains already "
+          .. "make; lower packing or raise hmx_mass", w, have)
+    end
+    extra = max(0, x)
+  end
+  local unresolved = fold + extra
+  local pure_binder = binder_vol - unresolved
+  if pure_binder < 0 then
+    bad(3, "the unresolved HMX (volume fraction %.3f) does not fit in the binder's %.3f: "
+        .. "raise packing or lower min_diameter", unresolved / V, binder_vol / V)
+  end
+  local mass_grains = rhoH * placed
+  local mass_dirty = rhoH * unresolved + rhoB * pure_binder
+  local total = mass_grains + mass_dirty
+  local stats = {
+    count = #g, coarse = n.coarse, fine = n.fine,
+    folded_coarse = folded.coarse.n, folded_fine = folded.fine.n,
+    packing_target = p.packing,
+    packing = placed / V,                          -- resolved spheres, by volume
+    packing_hmx = (placed + unresolved) / V,       -- every HMX grain, by volume
+    mass_fraction = mass_grains / total,
+    mass_fraction_hmx = rhoH * (placed + unresolved) / total,
+    hmx_mass_target = p.hmx_mass or 0,
+    folded = fold / V,                             -- folded fines, by volume
+    extra = extra / V,                             -- HMX added to reach hmx_mass, by volume
+    folded_mass = rhoH * fold,                     -- kg
+    folded_mass_fraction = rhoH * fold / total,
+    mass_ratio_target = p.mass_ratio,
+    mass_ratio = drawn.fine > 0 and drawn.coarse / drawn.fine or math.huge,
+    mass_ratio_resolved = vol.fine > 0 and vol.coarse / vol.fine or math.huge,
+    dirty_binder_density = binder_vol > 0 and mass_dirty / binder_vol or rhoB,
+    dirty_binder_hmx = binder_vol > 0 and unresolved / binder_vol or 0,
+    density = rhoH, binder_density = rhoB,
+    attached_left = attached.left, attached_right = attached.right,
+    stages = st.stages, sweeps = st.sweeps, relocated = st.relocated,
+    min_diameter = p.min_diameter,
+  }
+  local dmin, dmax = math.huge, 0
+  for _, d in ipairs(bed.grains) do dmin, dmax = min(dmin, d.d), max(dmax, d.d) end
+  stats.smallest, stats.largest = dmin, dmax
+  bed.stats = stats
+  bed.histogram = histogram(all, p.bins, function(d) return pi / 6 * d * d * d end)
+  bed.drawn = all
+  return bed
 end
 
 -- the smallest surface gap between two discs (nearest image in y) and
 -- between a disc and a side; O(n^2), for checks and statistics
 function M.min_gap(bed)
+  if bed.dim == 3 then
+    local g, H, D = bed.grains, bed.height, bed.depth
+    local worst, pair = math.huge, nil
+    for i = 1, #g do
+      local a = g[i]
+      for k = i + 1, #g do
+        local o = g[k]
+        local dx, dy, dz = o.x - a.x, near(o.y - a.y, H), near(o.z - a.z, D)
+        local s = sqrt(dx * dx + dy * dy + dz * dz) - a.r - o.r
+        if s < worst then worst, pair = s, {i, k} end
+      end
+    end
+    local wall = math.huge
+    for i = 1, #g do
+      local a = g[i]
+      wall = min(wall, a.x - a.r - bed.x0, bed.x0 + bed.width - a.x - a.r)
+    end
+    return worst, wall, pair
+  end
   local g, H = bed.grains, bed.height
   local worst, pair = math.huge, nil
   for i = 1, #g do
@@ -499,6 +883,10 @@ end
 -- stats = {...}, histogram = {...}, params}.  See the top of the file.
 function M.bed(spec)
   local p = check(spec, 2)
+  if p.dim == 3 then
+    local bed = bed3(p)   -- (not a tail call: errors name the caller's line)
+    return bed
+  end
   local r = rng(p.seed)
   local g, folded, drawn = sizes(p, r)
   local ok, s, eff, st = place(p, g, r)
@@ -569,7 +957,33 @@ end
 
 ------------------------------------------------------------ reporting
 
+local function summary3(bed)
+  local s = bed.stats
+  local t = {}
+  t[#t + 1] = string.format(
+    "bed %.4g x %.4g x %.4g, seed %d: %d spheres (%d coarse, %d fine), diameters %.3g .. %.3g",
+    bed.width, bed.height, bed.depth, bed.seed, s.count, s.coarse, s.fine, s.smallest, s.largest)
+  t[#t + 1] = string.format(
+    "resolved spheres: %.4f by volume (target %.4f), %.4f by mass",
+    s.packing, s.packing_target, s.mass_fraction)
+  t[#t + 1] = string.format(
+    "all HMX (with %.4f folded and %.4f added to reach hmx_mass %s, by volume): "
+    .. "%.4f by volume, %.4f by mass",
+    s.folded, s.extra,
+    s.hmx_mass_target > 0 and string.format("%.4g", s.hmx_mass_target) or "(none)",
+    s.packing_hmx, s.mass_fraction_hmx)
+  t[#t + 1] = string.format(
+    "coarse:fine mass %.3f (target %.3f; resolved spheres only %.3f); dirty binder %.0f kg/m^3 "
+    .. "(%.1f %% HMX by volume)", s.mass_ratio, s.mass_ratio_target, s.mass_ratio_resolved,
+    s.dirty_binder_density, 100 * s.dirty_binder_hmx)
+  t[#t + 1] = string.format(
+    "attached to the sides: %d left, %d right; %d growth stages, %d sweeps, %d relocations",
+    s.attached_left, s.attached_right, s.stages, s.sweeps, s.relocated)
+  return table.concat(t, "\n")
+end
+
 function M.summary(bed)
+  if bed.dim == 3 then return summary3(bed) end
   local s = bed.stats
   local t = {}
   t[#t + 1] = string.format(
@@ -602,10 +1016,18 @@ function M.write_csv(bed, prefix)
     return f
   end
   local f = open("_grains.csv")
-  f:write("id,class,x,y,diameter,side\n")
-  for i, d in ipairs(bed.grains) do
-    f:write(string.format("%d,%s,%.17g,%.17g,%.17g,%s\n", i, d.class, d.x, d.y, d.d,
-      d.side or ""))
+  if bed.dim == 3 then
+    f:write("id,class,x,y,z,diameter,side\n")
+    for i, d in ipairs(bed.grains) do
+      f:write(string.format("%d,%s,%.17g,%.17g,%.17g,%.17g,%s\n", i, d.class, d.x, d.y, d.z,
+        d.d, d.side or ""))
+    end
+  else
+    f:write("id,class,x,y,diameter,side\n")
+    for i, d in ipairs(bed.grains) do
+      f:write(string.format("%d,%s,%.17g,%.17g,%.17g,%s\n", i, d.class, d.x, d.y, d.d,
+        d.side or ""))
+    end
   end
   f:close()
   f = open("_sizes.csv")

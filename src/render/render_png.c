@@ -528,7 +528,10 @@ static long depth_order(const particles *ps, const render_opts *o,
     double z = ps->x[w->a][i];
     double half = o->thick > 0 ? o->thick / 2 : reach(ps, i, w->a);
     if (!isfinite(z)) continue;
-    if (!o->project && !(fabs(z - at) < half)) continue;
+    /* the cube's extent along the axis, half-open: a plane on the face
+    ** between two particles' cubes (the default, the middle of a
+    ** lattice, often is) takes exactly one of them, not neither */
+    if (!o->project && !(z - half <= at && at < z + half)) continue;
     d[n].z = w->toward * z;
     d[n++].i = i;
   }

@@ -9,39 +9,12 @@ local mvmpm = require "mvmpm"
 local name = os.getenv("CMP_CASE") or "block-linear-musl"
 local steps = tonumber(os.getenv("CMP_STEPS") or 10)
 
--- a filled elastic block of C x C cells, 2 x 2 particles per cell, with
--- a standing shear wave (bench/lib.lua's block, smaller)
+-- bench/lib.lua's block (200 x 200 cells) and packing, on one thread
+local B = dofile("bench/lib.lua")
 local function block(shape, update)
-  local C = 200
-  local h = 1 / C
-  local sim = mvmpm.sim {domain = {x = {-2 * h, 1 + 2 * h}, y = {-2 * h, 1 + 2 * h}},
-    cell = h, ppc = 2, shape = shape, update = update, flip = 1.0,
-    sides = "free", t_end = 1e9, threads = 1}
-  sim:body {shape = mvmpm.rect {lo = {0, 0}, hi = {1, 1}},
-            material = mvmpm.elastic {K = 1, G = 0.5, density = 1},
-            velocity = function(x, y) return 0.01 * math.sin(2 * math.pi * y), 0 end}
-  return sim
+  return B.block {cells = 200, shape = shape, update = update, threads = 1}
 end
-
--- nx x ny touching elastic discs, one field each, frictionless contact,
--- under uniform compression (bench/lib.lua's packing)
-local function grains(nx, ny)
-  local H = 1 / 400
-  local W, HT = 400 * H, 160 * H
-  local r = W / (2 * nx)
-  local sim = mvmpm.sim {domain = {x = {0, W}, y = {0, HT}}, cell = H, ppc = 2,
-    sides = "free", t_end = 1e9, contact = {friction = 0}, threads = 1}
-  local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
-  local xc, yc = W / 2, HT / 2
-  local v = function(x, y) return -0.05 * (x - xc), -0.05 * (y - yc) end
-  for j = 0, ny - 1 do
-    for i = 0, nx - 1 do
-      sim:body {shape = mvmpm.disk {center = {(2 * i + 1) * r, (2 * j + 1) * r}, radius = r},
-                material = m, velocity = v}
-    end
-  end
-  return sim
-end
+local function grains(nx, ny) return B.packing(nx, ny, {threads = 1}) end
 
 local cases = {
   ["block-linear-musl"] = function() return block("linear", "musl") end,

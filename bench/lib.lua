@@ -68,10 +68,12 @@ end
 
 -- (a), (e): a filled 400 x 400-cell elastic block with a standing shear
 -- wave, vx = 0.01 sin(2 pi y), so every particle strains; two empty cells
--- on each side keep it inside the domain with free sides
+-- on each side keep it inside the domain with free sides.  opt: options
+-- of mvmpm.sim, and cells (default 400) for a smaller block
 function B.block(opt)
-  local CELLS, PAD = 400, 2
+  local CELLS, PAD = opt and opt.cells or 400, 2
   local h = 1 / CELLS
+  if opt then opt.cells = nil end
   local sim = mvmpm.sim(with({
     domain = {x = {-PAD * h, 1 + PAD * h}, y = {-PAD * h, 1 + PAD * h}},
     cell = h, ppc = 2, shape = "linear", update = "musl", flip = 1.0,

@@ -219,9 +219,13 @@ end
 -- Draw grains until the placed ones cover the target area.  A coarse
 -- grain is drawn while coarse mass < ratio x fine mass (folded fines
 -- count), else a fine one, so the ratio holds to within one grain all
--- along.  Areas stand for masses: both classes are HMX.
-local function sizes(p, r)
+-- along.  Areas (in 3-D volumes: measure(d) of a grain of diameter d,
+-- the box's depth given) stand for masses: both classes are HMX.
+local function disc_area(d) return 0.25 * pi * d * d end
+local function sizes(p, r, depth, measure)
   local target = p.packing * p.width * p.height
+  if depth then target = target * depth end
+  measure = measure or disc_area
   local grains, folded = {}, {coarse = {n = 0, area = 0}, fine = {n = 0, area = 0}, list = {}}
   local area = {coarse = 0, fine = 0}
   local placed = 0
@@ -231,7 +235,7 @@ local function sizes(p, r)
     elseif area.fine == 0 and area.coarse == 0 then key = "coarse"
     else key = area.coarse < p.mass_ratio * area.fine and "coarse" or "fine" end
     local d = draw(r, p[key])
-    local a = 0.25 * pi * d * d
+    local a = measure(d)
     -- the last grain: only if the packing comes nearer the target with it
     if d >= p.min_diameter and placed + a > target and placed + a - target > target - placed then
       break
@@ -518,33 +522,7 @@ end
 -- the separation of two centres along a periodic axis of length L
 local function near(d, L) return d - L * floor(d / L + 0.5) end
 
-local function sizes3(p, r)
-  local target = p.packing * p.width * p.height * p.depth
-  local grains, folded = {}, {coarse = {n = 0, area = 0}, fine = {n = 0, area = 0}, list = {}}
-  local vol = {coarse = 0, fine = 0}
-  local placed = 0
-  while placed < target do
-    local key
-    if p.mass_ratio == 0 then key = "fine"
-    elseif vol.fine == 0 and vol.coarse == 0 then key = "coarse"
-    else key = vol.coarse < p.mass_ratio * vol.fine and "coarse" or "fine" end
-    local d = draw(r, p[key])
-    local v = pi / 6 * d * d * d
-    if d >= p.min_diameter and placed + v > target and placed + v - target > target - placed then
-      break
-    end
-    vol[key] = vol[key] + v
-    if d < p.min_diameter then
-      folded[key].n = folded[key].n + 1
-      folded[key].area = folded[key].area + v
-      folded.list[#folded.list + 1] = {d = d, class = key, folded = true}
-    else
-      grains[#grains + 1] = {r = 0.5 * d, class = key}
-      placed = placed + v
-    end
-  end
-  return grains, folded, vol
-end
+local function ball_volume(d) return pi / 6 * d * d * d end
 
 -- bins over the box; a sphere is listed in every bin its cube (radius at
 -- its scale + reach) touches, across the seams in y and z
@@ -754,7 +732,7 @@ end
 
 local function bed3(p)
   local r = rng(p.seed)
-  local g, folded, drawn = sizes3(p, r)
+  local g, folded, drawn = sizes(p, r, p.depth, ball_volume)
   local ok, s, eff, st = place3(p, g, r)
   if not ok then
     bad(3, "could not place %d spheres at packing %g with gap %g: growth stalled at %.3f of "

@@ -1,9 +1,10 @@
 -- The forces walls and driven bodies put on the material (sim:wall_force,
 -- sim:wall_nodes, b:force): a block resting on the floor under gravity is
 -- carried by the floor's force, its weight, also summed node by node;
--- and the material's momentum changes by exactly the impulses of the walls and of a driven plate, step by step
--- (internal forces cancel on the grid, and FLIP hands the grid's change
--- of momentum to the particles whole).
+-- and the material's momentum changes by exactly the impulses of the
+-- walls and of a driven plate, step by step (internal forces cancel on
+-- the grid, and FLIP hands the grid's change of momentum to the
+-- particles whole).
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 

@@ -206,8 +206,8 @@ const char *sim_advice(const sim *s) {
   /* the 3-D sphere's bounce (docs/accuracy.md): linear hats under MUSL
   ** lose 2.2 % at 8 cells, 0.7 % at 16, then gain 1.6 % at 32; GIMP
   ** under USAVG at cfl 0.25 does no better, but with the longer step
-  ** the walls stop the nodes fewer times in an impact: 1.6 % at 8 cells,
-  ** 0.8 % at 12, within 0.12 % at 16 and 24 */
+  ** an impact takes fewer steps, at each of which the walls' impact loss
+  ** is taken: 1.6 % at 8 cells, 0.8 % at 12, within 0.12 % at 16, 24 */
   if (DIM == 3 && s->shape == SHAPE_LINEAR)
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies at fine grids "

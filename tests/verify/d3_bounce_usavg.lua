@@ -8,11 +8,12 @@
 -- 2 % at 8 cells per diameter, falling with refinement.  The defaults
 -- (linear, FLIP, MUSL, cfl 0.25) lose 2.24 / 1.84 / 0.66 % at 8 / 12 /
 -- 16 cells (d3_bounce.lua).  Nearly all of the loss is the walls' impact
--- loss, which the budget books (sim:energy().impact): a node the wall
--- stops loses its normal kinetic energy, and it is stopped again each
--- time it comes back into contact during an impact, so a longer step
--- (fewer contact steps) loses less: the defaults at cfl 0.1 / 0.25 / 0.4
--- book 2.94 / 2.45 / 2.06 % at 8 cells.  Under MUSL a longer step also
+-- loss, which the budget books (sim:energy().impact): a pressed wall node
+-- starts each step with some approach (FLIP's particles keep it), which
+-- the wall removes and books as lost at every step of contact; the same
+-- nodes enter contact at any step, so a longer step (fewer contact
+-- steps) loses less: the defaults at cfl 0.1 / 0.25 / 0.4 book 2.94 /
+-- 2.45 / 2.06 % at 8 cells.  Under MUSL a longer step also
 -- gains energy in flight (the residual: -1.8 % at cfl 0.4, 8 cells; -5.5
 -- % at 16), USAVG does not, so only USAVG may take the longer step.
 -- Larger grids: studies/d3_bounce.lua, docs/accuracy.md.

@@ -205,14 +205,16 @@ const char *sim_advice(const sim *s) {
     return NULL;
   /* the 3-D sphere's bounce (docs/accuracy.md): linear hats under MUSL
   ** lose 2.2 % at 8 cells, 0.7 % at 16, then gain 1.6 % at 32; GIMP
-  ** under USAVG, the 2-D remedy, does no better up to 16 cells and
-  ** costs 1.6-2.9 times as much, so the 2-D advice is not given */
+  ** under USAVG at cfl 0.25 does no better, but with the longer step
+  ** an impact takes fewer steps, at each of which the walls' impact loss
+  ** is taken: 1.6 % at 8 cells, 0.8 % at 12, within 0.12 % at 16, 24 */
   if (DIM == 3 && s->shape == SHAPE_LINEAR)
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies at fine grids "
            "(the 3-D sphere's bounce under MUSL: -2.2 %, -0.7 %, +1.6 % after "
-           "three impacts at 8, 16, 32 cells per diameter; GIMP does no "
-           "better up to 16): check the energy budget (docs/accuracy.md)";
+           "three impacts at 8, 16, 32 cells per diameter); for 3-D impacts "
+           "use shape = \"gimp\", update = \"usavg\", cfl = 0.4 (-1.6 %, "
+           "-0.8 %, +0.06 %, -0.12 % at 8, 12, 16, 24) (docs/accuracy.md)";
   /* measured on the frictionless bouncing disc (docs/accuracy.md): the
   ** energy change after three impacts at 8, 16, 32, 48 cells across it.
   ** Linear hats gain per cell crossed under any update; GIMP under MUSL

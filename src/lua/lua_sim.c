@@ -11,6 +11,7 @@
 #include <string.h>
 #include "diag_contact.h"
 #include "diag_overlap.h"
+#include "diag_wall.h"
 #include "lcheck.h"
 #include "lsim.h"
 #include "lstate.h"
@@ -862,6 +863,35 @@ static int lwall_force(lua_State *L) {
   return DIM;
 }
 
+/* sim:wall_nodes("bottom") -> {x = {}, y = {}[, z = {}], force = {}}:
+** the nodes the wall presses on now and the compressive normal force at
+** each (diag_wall.h), as arrays in node order; empty for a side that is
+** not a wall */
+static int lwall_nodes(lua_State *L) {
+  static const char *const xn[] = {"x", "y", "z"};
+  lsim *ls = lsim_check(L, 1);
+  const char *name = luaL_checkstring(L, 2);
+  wall_press *w;
+  size_t n, i;
+  int k, d;
+  for (k = 0; k < NSIDES && strcmp(lsim_side_names[k], name) != 0; k++) {}
+  if (k == NSIDES)
+    luaL_error(L, "wall_nodes: no side '%s' (the sides are left, right, "
+                  "bottom, top%s)", name, DIM == 3 ? ", back, front" : "");
+  if (diag_wall(&ls->s, k, &w, &n)) return luaL_error(L, "%s", ls->s.err);
+  lua_createtable(L, 0, DIM + 1);
+  for (d = 0; d <= DIM; d++) {
+    lua_createtable(L, (int)n, 0);
+    for (i = 0; i < n; i++) {
+      lua_pushnumber(L, d < DIM ? w[i].x[d] : w[i].fn);
+      lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    lua_setfield(L, -2, d < DIM ? xn[d] : "force");
+  }
+  free(w);
+  return 1;
+}
+
 /* sim:overlap([maxdepth]) -> n, depth, body, host: particles buried in
 ** another body by a cell or more (diag_overlap.h), the deepest in cells,
 ** and for a deepest one its body and the body it lies in (ids, or nil) */
@@ -1037,7 +1067,8 @@ void lsim_open(lua_State *L) {
       {"temperature", lsim_temperature}, {"render", lrender_sim},
       {"hotspots", lsim_hotspots},
       {"heat", lsim_heat},
-      {"wall_force", lwall_force}, {"overlap", loverlap},
+      {"wall_force", lwall_force}, {"wall_nodes", lwall_nodes},
+      {"overlap", loverlap},
       {"contacts", lcontacts}, {"state", lstate},
       {"settle", lsettle}, {"at_end", lat_end},
       {NULL, NULL}};

@@ -160,7 +160,7 @@ STENCIL_INLINE void map_kind(sim *s, const int kind, int perfield) {
     mc = ps->m[i] * s->mats[mi].cv;
     V = ps->vol0[i] * jac(ps, i);
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, s->cfg.lp, &st);
     for (k = 0; k < st.n; k++) {
       double *a[6], w = st.w[k];
       size_t j;
@@ -193,7 +193,7 @@ STENCIL_INLINE void flow_kind(sim *s, const int kind, int perfield) {
     if (mi < 0 || !(s->mats[mi].kcond > 0)) continue;
     kV = s->mats[mi].kcond * ps->vol0[i] * jac(ps, i);
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, s->cfg.lp, &st);
     for (k = 0; k < st.n; k++) {
       double Tj;
       sl[k] = at(s, perfield, st.node[k], f, &j[k]);
@@ -227,7 +227,7 @@ STENCIL_INLINE double back_kind(sim *s, const int kind, int perfield) {
     h->tgrid[i] = 0;
     if (mi < 0) continue;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, s->cfg.lp, &st);
     for (k = 0; k < st.n; k++) {
       size_t j;
       int sl = at(s, perfield, st.node[k], bd->field, &j);
@@ -388,7 +388,7 @@ STENCIL_INLINE int conduct_kind(sim *s, const int kind) {
 }
 
 int conduct(sim *s) {
-  switch (s->shape) {
+  switch (s->cfg.shape) {
   case SHAPE_GIMP: return conduct_kind(s, SHAPE_GIMP);
   case SHAPE_BSPLINE2: return conduct_kind(s, SHAPE_BSPLINE2);
   default: return conduct_kind(s, SHAPE_LINEAR);

@@ -204,10 +204,10 @@ static void window(const grid *g, double *const a[DIM], int32_t n, int32_t f,
 **     it has none. */
 static void normals(sim *s, size_t k0, size_t k1) {
   grid *g = &s->g;
-  double *const *a = s->normals == NORMALS_MASS ? g->sg : g->sv;
-  const int maxv = s->normals == NORMALS_MAXVOLUME;
-  const int pl = s->normals == NORMALS_PLANE;
-  const int R = s->normal_window;
+  double *const *a = s->cfg.normals == NORMALS_MASS ? g->sg : g->sv;
+  const int maxv = s->cfg.normals == NORMALS_MAXVOLUME;
+  const int pl = s->cfg.normals == NORMALS_PLANE;
+  const int R = s->cfg.normal_window;
   size_t k;
   for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl;
@@ -250,7 +250,7 @@ static void normals_part(void *arg, int t, int nparts) {
   normals(s, k0, k1);
 }
 
-void contact_normals(sim *s) { par_run(s->par, normals_part, s); }
+void contact_normals(sim *s) { par_run(s->work.par, normals_part, s); }
 
 /*
 ** With a driven partner, the normal traction the bond carries at node n
@@ -349,7 +349,7 @@ static double symnn(const double *T, size_t cs, const double n[DIM]) {
 
 static int fitted(const sim *s, int32_t n, int32_t sl, int32_t o, double *t) {
   const grid *g = &s->g;
-  const double *b = s->bfit;
+  const double *b = s->work.bfit;
   size_t N = g->nnodes;
   int32_t fr = g->sfield[sl], fo = g->sfield[o];
   double m[2][5] = {{0}}, nn[DIM], A[2], B[2], xs, e2, w0, w1;
@@ -366,8 +366,8 @@ static int fitted(const sim *s, int32_t n, int32_t sl, int32_t o, double *t) {
     if (j < 0) continue;
     W = b[BF_W * N + j];
     if (g->head[j] >= 0 || !(W > 0)) continue;
-    if (s->bffield[j] == fr) sd = 0;
-    else if (s->bffield[j] == fo) sd = 1;
+    if (s->work.bffield[j] == fr) sd = 0;
+    else if (s->work.bffield[j] == fo) sd = 1;
     else continue;
     for (a = 0; a < DIM; a++) dl[a] = off[a];
     xi0 = vec_dot(dl, nn);
@@ -462,10 +462,10 @@ static double traction(const sim *s, int32_t n, int32_t sl, int drv) {
   const grid *g = &s->g;
   int32_t f = g->sfield[sl];
   double F = 0, A = 0;
-  int i[DIM], off[DIM], R = BOND_PATCH, fit = s->bond_fit && !drv;
-  if (fit && s->bond_length * g->inv_h > R)
-    R = s->bond_length * g->inv_h < BOND_PATCH_MAX
-            ? (int)ceil(s->bond_length * g->inv_h - 1e-9) : BOND_PATCH_MAX;
+  int i[DIM], off[DIM], R = BOND_PATCH, fit = s->cfg.bond_fit && !drv;
+  if (fit && s->cfg.bond_length * g->inv_h > R)
+    R = s->cfg.bond_length * g->inv_h < BOND_PATCH_MAX
+            ? (int)ceil(s->cfg.bond_length * g->inv_h - 1e-9) : BOND_PATCH_MAX;
   grid_ijk(g, n, i);
   win_first(off, R);
   do {
@@ -513,7 +513,7 @@ static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
   double b, t, cap, bs = left(g, sl), bo = left(g, o);
   if (!(bs > 0) || !(bo > 0 || odriven)) return 0;
   l = sim_law_of(s, g->sfield[sl], g->sfield[o]);
-  cap = l ? l->bond : s->bond_default;
+  cap = l ? l->bond : s->cfg.bond_default;
   if (!(cap > 0)) return 0;
   b = odriven || bs < bo ? bs : bo;
   t = traction(s, n, sl, odriven);
@@ -545,9 +545,9 @@ static double lose(const grid *g, int32_t sl, const double vref[DIM],
 static void booked(sim *s, size_t k, double fric, int cuts, double imp,
                    int rec) {
   if (rec) {
-    s->crec[CREC * k + DIM + 1] = fric;
-    s->crec[CREC * k + DIM + 2] = cuts;
-    s->crec[CREC * k + DIM + 3] = imp;
+    s->work.crec[CREC * k + DIM + 1] = fric;
+    s->work.crec[CREC * k + DIM + 2] = cuts;
+    s->work.crec[CREC * k + DIM + 3] = imp;
   } else {
     s->e.friction += fric;
     s->e.impact += imp;
@@ -623,7 +623,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   double fric = 0, imp = 0, cn[DIM];
   int32_t sl, slots[MAXSLOTS], drv = -1;
   int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
-  if (rec) s->cbody[k0] = -1;
+  if (rec) s->work.cbody[k0] = -1;
   if (M <= s->mcut) return;
   for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl]) {
     slots[ns++] = sl;
@@ -675,12 +675,12 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     }
     if (!(dn > 0)) continue;
     fn = 1;
-    if (s->release == RELEASE_OPEN && opening(s, sl, o, &gap)) {
+    if (s->cfg.release == RELEASE_OPEN && opening(s, sl, o, &gap)) {
       fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);
       if (!(fn > 0)) continue;
-    } else if (s->gap_check) {
+    } else if (s->cfg.gap_check) {
       gap = -(g->sext[sl] + other);
-      if (s->gap_step) {
+      if (s->cfg.gap_step) {
         fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);
         if (!(fn > 0)) continue;
       } else if (gap > 0)
@@ -717,8 +717,8 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       if (!rec) F[d] += sum / s->dt;
     }
     if (rec) {
-      double *r = s->crec + CREC * k0;
-      s->cbody[k0] = bi;
+      double *r = s->work.crec + CREC * k0;
+      s->work.cbody[k0] = bi;
       for (d = 0; d < DIM; d++) r[d] = (sb[d] + sc[d]) / s->dt;
       r[DIM] = w;
     } else
@@ -771,9 +771,9 @@ static int grow(void **p, size_t *cap, size_t need, size_t size) {
 
 int contact_prepare(sim *s) {
   const grid *g = &s->g;
-  size_t nc = s->cnodecap;
-  if (grow((void **)&s->crec, &nc, g->nshared, CREC * sizeof *s->crec) ||
-      grow((void **)&s->cbody, &s->cnodecap, g->nshared, sizeof *s->cbody))
+  size_t nc = s->work.cnodecap;
+  if (grow((void **)&s->work.crec, &nc, g->nshared, CREC * sizeof *s->work.crec) ||
+      grow((void **)&s->work.cbody, &s->work.cnodecap, g->nshared, sizeof *s->work.cbody))
     return -1;
   return 0;
 }
@@ -791,14 +791,14 @@ static void apply_sums(sim *s) {
   const grid *g = &s->g;
   size_t k;
   for (k = 0; k < g->nshared; k++) {
-    const double *r = s->crec + CREC * k;
+    const double *r = s->work.crec + CREC * k;
     int d;
     if (g->m[g->shared[k]] <= s->mcut) continue;
     s->e.friction += r[DIM + 1];
     s->ncut += (size_t)r[DIM + 2];
     s->e.impact += r[DIM + 3];
-    if (s->cbody[k] >= 0) {
-      double *F = s->bodies[s->cbody[k]].force;
+    if (s->work.cbody[k] >= 0) {
+      double *F = s->bodies[s->work.cbody[k]].force;
       for (d = 0; d < DIM; d++) F[d] += r[d];
       s->e.boundary += r[DIM];
     }
@@ -830,9 +830,9 @@ void contact_apply(sim *s) {
   size_t k;
   s->ncut = 0;
   s->bond_area = 0;
-  if (s->fbond >= 0 && s->bond_fit) par_run(s->par, fits_part, s);
-  if (s->cnodecap >= g->nshared) {
-    par_run(s->par, apply_part, s);
+  if (s->fbond >= 0 && s->cfg.bond_fit) par_run(s->work.par, fits_part, s);
+  if (s->work.cnodecap >= g->nshared) {
+    par_run(s->work.par, apply_part, s);
     apply_sums(s);
   } else
     for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);

@@ -210,7 +210,7 @@ STENCIL_INLINE double gather_kind(sim *s, const int kind) {
     int k, d;
     if (s->bmat[ps->body[i]] < 0) continue;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, s->cfg.lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       if (g->head[n] >= 0) {
@@ -231,7 +231,7 @@ STENCIL_INLINE double gather_kind(sim *s, const int kind) {
 /* the nodes' friction heat to the particles, booked as friction heat */
 static void gather(sim *s) {
   double fr;
-  switch (s->shape) {
+  switch (s->cfg.shape) {
   case SHAPE_GIMP: fr = gather_kind(s, SHAPE_GIMP); break;
   case SHAPE_BSPLINE2: fr = gather_kind(s, SHAPE_BSPLINE2); break;
   default: fr = gather_kind(s, SHAPE_LINEAR);
@@ -256,7 +256,7 @@ static double half_work(double *const c[DIM], double *const v[DIM], size_t i) {
 void heat_finish(sim *s) {
   heat_state *h = s->heat;
   const grid *g = &s->g;
-  const int remap = s->update != UPDATE_USL;
+  const int remap = s->cfg.update != UPDATE_USL;
   double *const *v = remap ? g->p : g->q, *const *sv = remap ? g->sp : g->sq;
   size_t n;
   memset(h->hn, 0, g->nnodes * sizeof *h->hn);

@@ -76,7 +76,7 @@ STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
-  marks *mk = &s->marks;
+  marks *mk = &s->work.marks;
   const size_t base = (size_t)t * mk->cap, cap = mk->cap;
   const int nw = shape_width(kind);
   int32_t *owner = g->owner, *head = g->head, *mf = mk->field, *mn = mk->next;
@@ -102,7 +102,7 @@ STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
     if (n0 == last && f == lastf) continue;
     last = n0;
     lastf = f;
-    if (split && !bands_rows(&s->bands, &geo, kind, ps->x[BANDS_DIM][i], t,
+    if (split && !bands_rows(&s->work.bands, &geo, kind, ps->x[BANDS_DIM][i], t,
                              pass, mine))
       continue;
     /* rows along BANDS_DIM (the last axis) outermost, x innermost: k
@@ -153,8 +153,8 @@ static void mark_part(void *arg, int t, int nparts) {
   mark_job *j = arg;
   sim *s = j->s;
   size_t i0 = 0, i1 = s->ps.n;
-  if (j->split) bands_span(&s->bands, t, j->pass, &i0, &i1);
-  switch (s->shape) {
+  if (j->split) bands_span(&s->work.bands, t, j->pass, &i0, &i1);
+  switch (s->cfg.shape) {
   case SHAPE_GIMP: mark_kind(s, SHAPE_GIMP, j->split, t, j->pass, i0, i1); break;
   case SHAPE_BSPLINE2:
     mark_kind(s, SHAPE_BSPLINE2, j->split, t, j->pass, i0, i1);
@@ -165,7 +165,7 @@ static void mark_part(void *arg, int t, int nparts) {
 
 /* fn over the parts of the marking: the pool's threads, or the caller */
 static void run(sim *s, par_fn fn, void *arg) {
-  if (s->marks.nparts > 1) par_run(s->par, fn, arg);
+  if (s->work.marks.nparts > 1) par_run(s->work.par, fn, arg);
   else fn(arg, 0, 1);
 }
 
@@ -174,7 +174,7 @@ static void run(sim *s, par_fn fn, void *arg) {
 static void order_part(void *arg, int t, int nparts) {
   sim *s = arg;
   grid *g = &s->g;
-  const marks *mk = &s->marks;
+  const marks *mk = &s->work.marks;
   size_t base = (size_t)t * mk->cap, a = base, ae = base + mk->nev1[t];
   size_t b = ae, be = base + mk->nev[t], at = mk->at[t], nsl = 0;
   while (a < ae || b < be) {
@@ -183,7 +183,7 @@ static void order_part(void *arg, int t, int nparts) {
     g->shared[at++] = n;
     for (m = g->head[n], nsl++; m >= 0; m = mk->next[m]) nsl++;
   }
-  s->marks.slots[t] = nsl;
+  s->work.marks.slots[t] = nsl;
 }
 
 /* Step 3, part t: the slots of its shared nodes, from its first, each
@@ -191,7 +191,7 @@ static void order_part(void *arg, int t, int nparts) {
 static void slots_part(void *arg, int t, int nparts) {
   sim *s = arg;
   grid *g = &s->g;
-  const marks *mk = &s->marks;
+  const marks *mk = &s->work.marks;
   size_t k, s0 = mk->slots[t], sl = s0;
   for (k = mk->at[t]; k < mk->at[t] + mk->nev[t]; k++) {
     int32_t n = g->shared[k], m = g->head[n];
@@ -212,7 +212,7 @@ static void slots_part(void *arg, int t, int nparts) {
 ** unowned again and no node has marks */
 static void undo(sim *s) {
   grid *g = &s->g;
-  const marks *mk = &s->marks;
+  const marks *mk = &s->work.marks;
   int t;
   size_t e;
   memset(g->owner, 0xff, g->nnodes * sizeof *g->owner);
@@ -224,10 +224,10 @@ static void undo(sim *s) {
 /* step 1, in as many parts as the plan has (one without a plan); 0, or
 ** -1 if some part ran out of room */
 static int mark_all(sim *s) {
-  marks *mk = &s->marks;
-  int split = s->bands.nb > 0, t;
+  marks *mk = &s->work.marks;
+  int split = s->work.bands.nb > 0, t;
   mark_job j = {s, split, 1};
-  mk->nparts = split ? s->bands.nb : 1;
+  mk->nparts = split ? s->work.bands.nb : 1;
   for (t = 0; t < mk->nparts; t++) mk->used[t] = mk->nev[t] = mk->full[t] = 0;
   run(s, mark_part, &j);
   for (t = 0; t < mk->nparts; t++) mk->nev1[t] = mk->nev[t];
@@ -242,11 +242,11 @@ static int mark_all(sim *s) {
 
 int p2g_mark(sim *s) {
   grid *g = &s->g;
-  marks *mk = &s->marks;
+  marks *mk = &s->work.marks;
   size_t nshared = 0, nslot = 0, most = 0;
   int t;
   for (;;) {
-    if (room(mk, s->bands.nb > 0 ? s->bands.nb : 1)) return -1;
+    if (room(mk, s->work.bands.nb > 0 ? s->work.bands.nb : 1)) return -1;
     if (!mark_all(s)) break;
     undo(s);
     mk->cap *= 2;

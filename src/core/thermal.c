@@ -66,7 +66,7 @@ void thermal_prestress(sim *s) {
 static void thermal_part(void *arg, int t, int nparts) {
   sim *s = arg;
   particles *ps = &s->ps;
-  double *T = particles_comp(ps, s->ftemp, 0), *red = s->red;
+  double *T = particles_comp(ps, s->ftemp, 0), *red = s->work.red;
   const double Tn = s->temp;
   size_t n = ps->n, c, c0, c1, i, i0, i1;
   par_chunks(n, t, nparts, &c0, &c1);
@@ -86,8 +86,8 @@ static void thermal_part(void *arg, int t, int nparts) {
 
 /* the chunks' work added in chunk order: the same for any thread count */
 void thermal(sim *s) {
-  const double *red = s->red;
+  const double *red = s->work.red;
   size_t c, nc = par_nchunks(s->ps.n);
-  par_run(s->par, thermal_part, s);
+  par_run(s->work.par, thermal_part, s);
   for (c = 0; c < nc; c++) s->e.thermal += red[c];
 }

@@ -40,7 +40,7 @@ STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared,
   grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double lp = s->lp;
+  const double lp = s->cfg.lp;
   stencil_geo geo;
   stencil st;
   size_t i;
@@ -80,7 +80,7 @@ static void apply(sim *s, int keep) {
 #define APPLY(K)                                                         \
   if (shared) { if (keep) apply_kind(s, K, 1, 1); else apply_kind(s, K, 1, 0); } \
   else { if (keep) apply_kind(s, K, 0, 1); else apply_kind(s, K, 0, 0); }
-  switch (s->shape) {
+  switch (s->cfg.shape) {
   case SHAPE_GIMP: APPLY(SHAPE_GIMP) break;
   case SHAPE_BSPLINE2: APPLY(SHAPE_BSPLINE2) break;
   default: APPLY(SHAPE_LINEAR)
@@ -120,14 +120,14 @@ static void nodes_part(void *arg, int t, int nparts) {
 
 void xpic(sim *s) {
   xjob j = {s, 0};
-  par_run(s->par, nodes_part, &j); /* u = v */
+  par_run(s->work.par, nodes_part, &j); /* u = v */
   apply(s, 1);
   j.stage = 1;                     /* u1 = v - A v */
-  par_run(s->par, nodes_part, &j);
-  if (s->xpic >= 3) {              /* c = 2 u1 - A u1 */
+  par_run(s->work.par, nodes_part, &j);
+  if (s->cfg.xpic >= 3) {              /* c = 2 u1 - A u1 */
     apply(s, 0);
     j.stage = 2;
-    par_run(s->par, nodes_part, &j);
+    par_run(s->work.par, nodes_part, &j);
   }
   /* the correction's normal part off where a wall acted */
   boundary_normal_set(s, s->g.f, s->g.sf, 0);

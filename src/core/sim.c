@@ -110,32 +110,34 @@ void sim_set_threads(sim *s, int n) {
 ** made at the first step and grown (doubling) only if particles were
 ** added since, so steps do not allocate */
 int sim_prepare(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   size_t need = par_nchunks(s->ps.n) * SIM_RED_BYTES;
-  if (!s->work.par && !(s->work.par = par_new(s->cfg.threads))) {
-    snprintf(s->err, sizeof s->err, "cannot start %d threads", s->cfg.threads);
+  if (!wk->par && !(wk->par = par_new(cfg->threads))) {
+    snprintf(s->err, sizeof s->err, "cannot start %d threads", cfg->threads);
     return -1;
   }
-  if (!s->work.wext && par_threads(s->work.par) > 1) { /* reach.c: walls */
+  if (!wk->wext && par_threads(wk->par) > 1) { /* reach.c: walls */
     int k;
-    s->work.wextn = 0;
-    for (k = 0; k < NSIDES; k++) s->work.wextn += s->sides[k].next;
-    s->work.wext = malloc((size_t)(par_threads(s->work.par) - 1) * s->work.wextn *
-                     sizeof *s->work.wext);
-    if (!s->work.wext) {
+    wk->wextn = 0;
+    for (k = 0; k < NSIDES; k++) wk->wextn += s->sides[k].next;
+    wk->wext = malloc((size_t)(par_threads(wk->par) - 1) * wk->wextn *
+                     sizeof *wk->wext);
+    if (!wk->wext) {
       snprintf(s->err, sizeof s->err, "out of memory for partial sums");
       return -1;
     }
   }
-  if (need > s->work.redcap) {
-    size_t cap = s->work.redcap ? 2 * s->work.redcap : SIM_RED_BYTES * 64;
+  if (need > wk->redcap) {
+    size_t cap = wk->redcap ? 2 * wk->redcap : SIM_RED_BYTES * 64;
     void *r;
     while (cap < need) cap *= 2;
-    if (!(r = realloc(s->work.red, cap))) {
+    if (!(r = realloc(wk->red, cap))) {
       snprintf(s->err, sizeof s->err, "out of memory for partial sums");
       return -1;
     }
-    s->work.red = r;
-    s->work.redcap = cap;
+    wk->red = r;
+    wk->redcap = cap;
   }
   return 0;
 }
@@ -306,16 +308,18 @@ long sim_add_particle(sim *s, int32_t b, const double x[DIM],
 }
 
 double sim_stable_dt(const sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   double c = 0;
   int k;
   for (k = 0; k < s->nmat; k++)
     if (s->mats[k].c > c) c = s->mats[k].c;
   /* the wave speed grows as the material is stretched: c ~ sqrt(J) */
   if (s->e.jmax > 1) c *= sqrt(s->e.jmax);
-  return s->cfg.cfl * s->g.h / (c + s->vmax);
+  return cfg->cfl * s->g.h / (c + s->vmax);
 }
 
 void sim_measure(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   const particles *ps = &s->ps;
   size_t i;
   int d;
@@ -327,7 +331,7 @@ void sim_measure(sim *s) {
     for (d = 0; d < DIM; d++) {
       v2 += ps->v[d][i] * ps->v[d][i];
       s->e.mom[d] += ps->m[i] * ps->v[d][i];
-      pe -= ps->m[i] * s->cfg.gravity[d] * ps->x[d][i];
+      pe -= ps->m[i] * cfg->gravity[d] * ps->x[d][i];
     }
     if (v2 > v2max) v2max = v2;
     ke += 0.5 * ps->m[i] * v2;
@@ -346,9 +350,10 @@ void sim_measure(sim *s) {
 }
 
 double sim_next_dt(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   double dt;
   if (!s->started) sim_measure(s);
-  dt = s->cfg.dt_fixed > 0 ? s->cfg.dt_fixed : sim_stable_dt(s);
+  dt = cfg->dt_fixed > 0 ? cfg->dt_fixed : sim_stable_dt(s);
   /* land on the end of a run rather than overshoot it; a sliver shorter
   ** than a thousandth of a step is absorbed by the step before */
   if (s->t_stop > s->t && s->t + dt * 1.001 > s->t_stop) dt = s->t_stop - s->t;
@@ -356,10 +361,11 @@ double sim_next_dt(sim *s) {
 }
 
 int sim_wall_hold(const sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   int d;
-  if (s->cfg.wall_remap != WALL_REMAP_AUTO) return s->cfg.wall_remap == WALL_REMAP_HOLD;
+  if (cfg->wall_remap != WALL_REMAP_AUTO) return cfg->wall_remap == WALL_REMAP_HOLD;
   for (d = 0; d < DIM; d++)
-    if (s->cfg.gravity[d] != 0) return 1;
+    if (cfg->gravity[d] != 0) return 1;
   return 0;
 }
 
@@ -409,7 +415,8 @@ typedef struct cjob { sim *s; double dt; } cjob;
 static void constitutive_part(void *arg, int t, int nparts) {
   const cjob *j = arg;
   sim *s = j->s;
-  mat_sums *red = s->work.red;
+  sim_work *wk = &s->work;
+  mat_sums *red = wk->red;
   size_t n = s->ps.n, c, c0, c1, i0, i1;
   int k;
   par_chunks(n, t, nparts, &c0, &c1);
@@ -426,11 +433,13 @@ static void constitutive_part(void *arg, int t, int nparts) {
 _Static_assert(sizeof(mat_sums) <= SIM_RED_BYTES, "mat_sums fit SIM_RED_BYTES");
 
 int constitutive(sim *s, double dt) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   mat_sums sum = {0, 0, 1e300, -1e300, 0, 0, 0, 0};
-  const mat_sums *red = s->work.red;
+  const mat_sums *red = wk->red;
   size_t c, nc = par_nchunks(s->ps.n);
   cjob j = {s, dt};
-  par_run(s->work.par, constitutive_part, &j);
+  par_run(wk->par, constitutive_part, &j);
   /* in chunk order: the same for any thread count */
   for (c = 0; c < nc; c++) {
     sum.strain += red[c].strain;
@@ -451,7 +460,7 @@ int constitutive(sim *s, double dt) {
     s->e.heat_viscous += sum.viscous;
   }
   /* USAVG's stresses are those of the step's end, as the velocities */
-  s->e.lag = s->cfg.update == UPDATE_USAVG ? 0 : -0.5 * dt * sum.power;
+  s->e.lag = cfg->update == UPDATE_USAVG ? 0 : -0.5 * dt * sum.power;
   if (sum.jmin <= sum.jmax) { s->e.jmin = sum.jmin; s->e.jmax = sum.jmax; }
   s->e.nbadj = sum.nbadj;
   if (sum.nbadj) {
@@ -466,6 +475,8 @@ int constitutive(sim *s, double dt) {
 
 /* particles that left the domain are dropped (documented behaviour) */
 static void housekeeping(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   particles *ps = &s->ps;
   if (s->nout) {
     unsigned char *keep = ps->scratch; /* cap bytes are enough */
@@ -480,26 +491,27 @@ static void housekeeping(sim *s) {
   ** and the scatter plan (bands.h) of two bodies side by side gives one
   ** part every row in pass 1 and the other every row in pass 2: the
   ** threads took turns for the first sort_every steps */
-  if (s->cfg.sort_every > 0 && (s->step % s->cfg.sort_every == 0 || s->step == 1)) {
+  if (cfg->sort_every > 0 && (s->step % cfg->sort_every == 0 || s->step == 1)) {
     size_t ncell = 1;
     int d;
     for (d = 0; d < DIM; d++) ncell *= (size_t)s->g.cells[d];
-    particles_sort(ps, ps->cell, ncell, s->work.par);
+    particles_sort(ps, ps->cell, ncell, wk->par);
   }
 }
 
 void sim_begin(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   const particles *ps = &s->ps;
   double mmin = 1e300;
   size_t i;
   for (i = 0; i < ps->n; i++)
     if (ps->m[i] < mmin) mmin = ps->m[i];
-  s->mcut = ps->n ? s->cfg.mcut_rel * mmin : 0;
+  s->mcut = ps->n ? cfg->mcut_rel * mmin : 0;
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain + s->e.potential;
   s->e.potential0 = s->e.potential;
   s->e.jmin = s->e.jmax = 1;
-  s->dt = s->cfg.dt_fixed > 0 ? s->cfg.dt_fixed : sim_stable_dt(s);
+  s->dt = cfg->dt_fixed > 0 ? cfg->dt_fixed : sim_stable_dt(s);
 }
 
 /* the forces walls and driven bodies report are those of this step */
@@ -521,7 +533,9 @@ static void reset_part(void *arg, int t, int nparts) {
 }
 
 int sim_step(sim *s) {
-  int musl = s->cfg.update != UPDATE_USL, usavg = s->cfg.update == UPDATE_USAVG;
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
+  int musl = cfg->update != UPDATE_USL, usavg = cfg->update == UPDATE_USAVG;
   if (sim_prepare(s)) return -1;
   if (s->heat && !s->heat->ready && heat_start(s)) return -1;
   if (!s->started) {
@@ -532,11 +546,11 @@ int sim_step(sim *s) {
     s->started = 1;
   }
   s->dt = sim_next_dt(s);
-  prof_mark(s->work.prof, PROF_HOUSE);
-  par_run(s->work.par, reset_part, &s->g);
+  prof_mark(wk->prof, PROF_HOUSE);
+  par_run(wk->par, reset_part, &s->g);
   grid_reset_slots(&s->g);
   p2g_plan(s);
-  s->g.moments = s->cfg.normals == NORMALS_PLANE;
+  s->g.moments = cfg->normals == NORMALS_PLANE;
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
@@ -544,11 +558,11 @@ int sim_step(sim *s) {
   if (s->heat && heat_prepare(s)) return -1;
   p2g(s);
   if (usavg && usf(s)) return -1;
-  prof_mark(s->work.prof, PROF_P2G);
+  prof_mark(wk->prof, PROF_P2G);
   solve_momentum(s);
-  prof_mark(s->work.prof, PROF_SOLVE);
+  prof_mark(wk->prof, PROF_SOLVE);
   if (s->g.nshared) contact_normals(s);
-  if (s->cfg.gap_check) reach(s);
+  if (cfg->gap_check) reach(s);
   forces_clear(s);
   if (s->g.nshared && s->fbond >= 0) bond_gather(s);
   if (s->g.nshared) contact_apply(s);
@@ -556,19 +570,19 @@ int sim_step(sim *s) {
     bond_scatter(s);
     s->ncut_total += s->ncut;
   }
-  prof_mark(s->work.prof, PROF_CONTACT);
+  prof_mark(wk->prof, PROF_CONTACT);
   boundary_apply(s);
-  prof_mark(s->work.prof, PROF_SIDES);
+  prof_mark(wk->prof, PROF_SIDES);
   if (s->heat) {
     if (heat_grid(s)) return -1;
-    prof_mark(s->work.prof, PROF_HEAT);
+    prof_mark(wk->prof, PROF_HEAT);
   }
   solve_velocity(s);
-  if (s->cfg.transfer == TRANSFER_XPIC) xpic(s);
-  prof_mark(s->work.prof, PROF_SOLVE);
+  if (cfg->transfer == TRANSFER_XPIC) xpic(s);
+  prof_mark(wk->prof, PROF_SOLVE);
   if (!musl && s->heat) heat_finish(s); /* book_finish's velocities (vL) */
   g2p(s);
-  prof_mark(s->work.prof, PROF_G2P);
+  prof_mark(wk->prof, PROF_G2P);
   if (musl) {
     /* the remap is not constrained again by contact: the velocity
     ** gradient follows what the particles do; the walls only where the
@@ -579,7 +593,7 @@ int sim_step(sim *s) {
     if (s->heat) heat_finish(s); /* ... and its heat, before the move */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
-    prof_mark(s->work.prof, PROF_REMAP);
+    prof_mark(wk->prof, PROF_REMAP);
   }
   if (!musl) book_finish(s); /* no remap: on vL */
   if (s->temp_on) thermal(s);
@@ -587,15 +601,15 @@ int sim_step(sim *s) {
   /* after every other source of heat of the step */
   if (s->fmelt >= 0) melt(s);
   if (s->react_on) react(s);
-  prof_mark(s->work.prof, PROF_CONST);
+  prof_mark(wk->prof, PROF_CONST);
   if (s->heat) {
     heat_update(s);
-    prof_mark(s->work.prof, PROF_HEAT);
+    prof_mark(wk->prof, PROF_HEAT);
   }
   s->t += s->dt;
   s->step++;
   housekeeping(s);
-  if (s->work.prof) s->work.prof->steps++;
-  prof_mark(s->work.prof, PROF_HOUSE);
+  if (wk->prof) wk->prof->steps++;
+  prof_mark(wk->prof, PROF_HOUSE);
   return 0;
 }

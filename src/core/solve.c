@@ -67,8 +67,9 @@ static void velocity(size_t i0, size_t i1, const double *m, double *const p[DIM]
 
 static void velocity_part(void *arg, int t, int nparts) {
   sim *s = arg;
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
-  int musl = s->cfg.update != UPDATE_USL;
+  int musl = cfg->update != UPDATE_USL;
   size_t i0, i1;
   par_range(g->nnodes, t, nparts, &i0, &i1);
   velocity(i0, i1, g->m, g->p, g->q, g->f, s->mcut, musl);

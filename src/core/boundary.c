@@ -409,7 +409,7 @@ typedef int col_fn(const sim *s, int k, size_t j, int first, int last);
 ** axis is periodic (from 0 otherwise), the patches numbered as the scan
 ** meets them and each patch's columns listed in scan order: in 2-D the
 ** runs of consecutive columns, one patch across a seam.  Works in
-** s->wpatch (sim.c): lab, stack, cols, off; returns the number of patches,
+** s->work.wpatch (sim.c): lab, stack, cols, off; returns the number of patches,
 ** patch p's columns being cols[off[p]] .. cols[off[p + 1] - 1]. */
 static int patch_find(const sim *s, int k, int first, int last, col_fn *in) {
   const sim_work *wk = &s->work;

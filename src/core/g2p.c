@@ -76,7 +76,7 @@ double g2p_affine_energy(const sim *s) {
   return e;
 }
 
-/* the sums of one chunk of particles (par.h), kept in s->red */
+/* the sums of one chunk of particles (par.h), kept in s->work.red */
 typedef struct sums {
   double ke, mom[DIM], am[3], v2max, pe, loss;
   size_t out;

@@ -118,7 +118,7 @@ static void shared_span(void *arg, size_t i0, size_t i1, int t, int pass) {
 }
 
 /* The walls, part t of the particles: part 0 into the sides' own
-** arrays, the others each into a copy of its own (s->wext), merged after:
+** arrays, the others each into a copy of its own (s->work.wext), merged after:
 ** a maximum does not depend on the order it is taken in */
 static void walls_part(void *arg, int t, int nparts) {
   sim *s = arg;

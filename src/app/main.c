@@ -612,13 +612,13 @@ static int cmd_run(int argc, char **argv) {
   ls->progress = !o.quiet;
   if (o.threads) sim_set_threads(&ls->s, o.threads);
   if (o.profile) par_account(1);
-  if (o.profile && !(ls->s.prof = calloc(1, sizeof *ls->s.prof))) {
+  if (o.profile && !(ls->s.work.prof = calloc(1, sizeof *ls->s.work.prof))) {
     fprintf(stderr, "%s: out of memory\n", progname);
     lua_close(L);
     free(stored_scene);
     return 1;
   }
-  if (ls->s.prof) ls->s.prof->last = prof_clock();
+  if (ls->s.work.prof) ls->s.work.prof->last = prof_clock();
   lua_setglobal(L, "sim");
   w0 = now();
   /* no Lua hook: Ctrl-C stops the run at the next step boundary, where a

@@ -32,7 +32,7 @@ int diag_grid(sim *s) {
   if (!s->started) sim_begin(s);
   grid_reset(&s->g, 0);
   p2g_plan(s);
-  s->g.moments = s->normals == NORMALS_PLANE;
+  s->g.moments = s->cfg.normals == NORMALS_PLANE;
   if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "contacts: out of memory for shared nodes");
     return -1;
@@ -40,7 +40,7 @@ int diag_grid(sim *s) {
   p2g(s);
   solve_momentum(s);
   if (s->g.nshared) contact_normals(s);
-  if (s->gap_check) reach(s); /* the walls' too (diag_wall.h) */
+  if (s->cfg.gap_check) reach(s); /* the walls' too (diag_wall.h) */
   return 0;
 }
 
@@ -71,7 +71,7 @@ static void node_recs(const sim *s, size_t k, rec *rc, size_t *nr) {
     }
     if (drv >= 0) o = drv;
     if (o < 0 || !(dn > 0)) continue;
-    if (s->gap_check && g->sext[sl] + other < 0) continue;
+    if (s->cfg.gap_check && g->sext[sl] + other < 0) continue;
     e = &rc[(*nr)++];
     e->r = g->sfield[sl];
     e->o = g->sfield[o];

@@ -49,9 +49,9 @@ int diag_wall(sim *s, int k, wall_press **out, size_t *n) {
   for (line = first; line <= last; line++)
     for (j = 0; j < sd->next; j++) {
       int32_t nd = grid_face_node(g, d, line, j), sl;
-      double gap = s->gap_check ? -sd->ext[j] : 0, dn = 0;
+      double gap = s->cfg.gap_check ? -sd->ext[j] : 0, dn = 0;
       int i[DIM];
-      if (!(g->m[nd] > s->mcut) || (gap > 0 && !s->gap_step)) continue;
+      if (!(g->m[nd] > s->mcut) || (gap > 0 && !s->cfg.gap_step)) continue;
       if (g->head[nd] < 0) dn = press(s, g->m[nd], g->q[d][nd], sd->v[d], sign, gap);
       else
         for (sl = g->head[nd]; sl >= 0; sl = g->snext[sl])

@@ -492,20 +492,20 @@ void run_check_steps(lua_State *L, lsim *ls, double t_end) {
   double span = t_end - s->t, dt, steps;
   if (!(span > 0)) return;
   if (!s->started) sim_measure(s); /* the particle speeds */
-  dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  dt = s->cfg.dt_fixed > 0 ? s->cfg.dt_fixed : sim_stable_dt(s);
   steps = span / dt;
   if (!(steps <= LSIM_MAX_STEPS)) {
     double c = 0;
     int m;
     for (m = 0; m < s->nmat; m++)
       if (s->mats[m].c > c) c = s->mats[m].c;
-    if (s->dt_fixed > 0)
+    if (s->cfg.dt_fixed > 0)
       chk_error(L, "run: from t = %g to t = %g steps of dt = %g would take "
                    "%.3g steps (at most %.0e); give a larger 'dt'", s->t,
                 t_end, dt, steps, LSIM_MAX_STEPS);
     chk_error(L, "run: from t = %g to t = %g the step cfl * cell / (wave "
                  "speed + particle speed) = %g * %g / (%g + %g) = %g would "
-                 "take %.3g steps (at most %.0e)", s->t, t_end, s->cfl,
+                 "take %.3g steps (at most %.0e)", s->t, t_end, s->cfg.cfl,
               s->g.h, c, s->vmax, dt, steps, LSIM_MAX_STEPS);
   }
 }
@@ -643,7 +643,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   pl.next_t = t0 + 0.1 * (t_end - t0);
   warn_from = isfinite(t_end) ? t0 + WARN_FROM * (t_end - t0) : t0;
   pl.last_w = wall0;
-  prof_start(s->prof);
+  prof_start(s->work.prof);
   /* t_end = HUGE_VAL (sim:step) would make the tolerance inf - inf = NaN */
   while ((max_steps < 0 || k < max_steps) &&
          (isinf(t_end) || s->t < t_end - 1e-12 * (1 + fabs(t_end)))) {
@@ -653,7 +653,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     if (ls->drives || ls->sidefns) drives(L, simidx, ls);
     /* the temperature at the end of the coming step */
     if (ls->tempfn) s->temp = lsim_temperature_at(L, simidx, s->t + sim_next_dt(s));
-    prof_mark(s->prof, PROF_DIAG);
+    prof_mark(s->work.prof, PROF_DIAG);
     if (sim_step(s)) {
       failed_state(L, ls);
       luaL_error(L, "%s%s", s->err, ls->failed);
@@ -662,7 +662,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     if (ls->csv_open) residual_check(ls, warn_from);
     if (ls->csv_open && ls->csv_every > 0 && s->step % ls->csv_every == 0) csv_row(L, ls);
     if (ls->nevery) callbacks(L, simidx, ls);
-    prof_mark(s->prof, PROF_DIAG);
+    prof_mark(s->work.prof, PROF_DIAG);
     if (ls->csv_open && ls->out_every > 0 && s->t >= ls->out_next - 1e-9 * ls->out_every) {
       snapshot(L, ls);
       ls->out_next = sched_next(ls->out_next, ls->out_every, s->t, 1e-9 * ls->out_every);
@@ -676,7 +676,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 0);
     else if (quietly && max_steps < 0)
       plain_progress(ls, &pl, t_end, t0, wall0, step0);
-    prof_mark(s->prof, PROF_OUTPUT);
+    prof_mark(s->work.prof, PROF_OUTPUT);
     if (interrupt_pending()) {
       interrupt_clear();
       if (show) progress(ls, t_end, t0, wall0, step0, 1);

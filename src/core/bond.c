@@ -121,7 +121,9 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   const body *bd = s->bodies;
   const double *bp = particles_comp(ps, s->fbond, 0);
   const double *rel = particles_comp(ps, s->frel, 0);
-  const int nw = shape_width(s->shape), fitting = s->bond_fit;
+  /* a node's row along BANDS_DIM in the stencil: k / rowlen (nw in 2-D,
+  ** nw^2 in 3-D) */
+  const int rowlen = stencil_rowlen(s->shape), fitting = s->bond_fit;
   /* the normals took the volume gradient in p2g already (the same sums
   ** in the same order) */
   const int byvol = s->normals != NORMALS_MASS;
@@ -146,7 +148,7 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
     V = volume(ps, i);
     for (k = 0; k < (size_t)st.n; k++) {
       int32_t n = st.node[k], sl;
-      if (blk >= 0 && !mine[k / nw]) continue;
+      if (blk >= 0 && !mine[k / rowlen]) continue;
       if (g->head[n] < 0) {
         if (fitting && bp[i] > 0 && st.w[k] > 0) fit(s, n, f, x, V * st.w[k], i);
         continue;

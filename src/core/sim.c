@@ -246,7 +246,8 @@ const char *sim_advice(const sim *s) {
 ** studies/grain_budget.lua) */
 const char *sim_budget_advice(const sim *s) {
   const sim_energy *e = &s->e;
-  double num = e->transfer + e->impact + e->bonding, put = e->initial + e->boundary;
+  double num = e->transfer + e->impact + e->bonding;
+  double put = e->initial + e->boundary;
   if (!(e->friction > 0) || !(put > 0) || num < 0.02 * put ||
       num < 0.5 * e->friction)
     return NULL;

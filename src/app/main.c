@@ -671,9 +671,9 @@ static int cmd_run(int argc, char **argv) {
            sim_residual(s),
            100 * sim_residual(s) / (sim_scale(s) > 0 ? sim_scale(s) : 1),
            sim_scale(s));
-    if (s->e.transfer != 0 || s->e.impact != 0)
-      printf("        numerical: transfer %.6g  impact %.6g\n", s->e.transfer,
-             s->e.impact);
+    if (s->e.transfer != 0 || s->e.impact != 0 || s->e.bonding != 0)
+      printf("        numerical: transfer %.6g  impact %.6g  bonding %.6g\n",
+             s->e.transfer, s->e.impact, s->e.bonding);
     if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0 ||
         s->e.settled != 0)
       printf("        plastic %.6g  viscous %.6g  thermal work %.6g  settled "

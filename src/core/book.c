@@ -64,4 +64,5 @@ void book_finish(sim *s) {
   if (walls) s->e.friction += half(g->nnodes, g->m, s->mcut, v, g->fi);
   s->e.friction += half(g->nslot, g->sm, s->mcut, sv, g->sfi);
   s->e.impact += half(g->nslot, g->sm, s->mcut, sv, g->sni);
+  s->e.bonding += half(g->nslot, g->sm, s->mcut, sv, g->sbi);
 }

@@ -51,9 +51,9 @@
 
 #define MAXSLOTS 64
 /* a node's record in a threaded pass: the driven body's force (DIM) and
-** work, the friction work, the bonds cut (a count), and the normal
-** impulses' loss */
-#define CREC (DIM + 4)
+** work, the friction work, the bonds cut (a count), the normal
+** impulses' loss and the bonded impulses' */
+#define CREC (DIM + 5)
 
 /*
 ** The window.  A node's support sees a body's surface over one or two
@@ -544,18 +544,20 @@ static double lose(const grid *g, int32_t sl, const double vref[DIM],
   return -w / mr;
 }
 
-/* node k's friction work, bonds cut and normal impulses' loss: recorded
-** (a threaded pass) or added now */
+/* node k's friction work, bonds cut, normal and bonded impulses' loss:
+** recorded (a threaded pass) or added now */
 static void booked(sim *s, size_t k, double fric, int cuts, double imp,
-                   int rec) {
+                   double bnd, int rec) {
   sim_work *wk = &s->work;
   if (rec) {
     wk->crec[CREC * k + DIM + 1] = fric;
     wk->crec[CREC * k + DIM + 2] = cuts;
     wk->crec[CREC * k + DIM + 3] = imp;
+    wk->crec[CREC * k + DIM + 4] = bnd;
   } else {
     s->e.friction += fric;
     s->e.impact += imp;
+    s->e.bonding += bnd;
     s->ncut += (size_t)cuts;
   }
 }
@@ -627,7 +629,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   double cb[MAXSLOTS][DIM], cc[MAXSLOTS][DIM];
   double ct[MAXSLOTS][DIM]; /* the tangential part of cc: friction's */
   double sb[DIM] = {0}, sc[DIM] = {0}, st[DIM] = {0}, vref[DIM], M = g->m[n];
-  double fric = 0, imp = 0, cn[DIM];
+  double fric = 0, imp = 0, bnd = 0, cn[DIM];
   int32_t sl, slots[MAXSLOTS], drv = -1;
   int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
   if (rec) wk->cbody[k0] = -1;
@@ -668,13 +670,17 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       int b = bonded(s, n, sl, o, drv >= 0);
       cuts += b < 0;
       if (b > 0) {
-        /* no energy is booked for it: the fields' nodal velocities differ
-        ** only by how the particles sample them, as on one shared field,
-        ** and FLIP keeps each particle's own motion (measured: booking
-        ** sum |dp|^2 / 2m as lost left the budget short by exactly that) */
+        /* the fields' nodal velocities differ by how their particles
+        ** sample the motion; making them one is an inelastic collision
+        ** of the fields at the node, whose loss is booked as a contact
+        ** impulse's (lose(), e.bonding).  The slot's internal force
+        ** impulse, dt f less gravity's, is kept for the work the
+        ** stresses do on the common velocity (bond_remap) */
         for (d = 0; d < DIM; d++) {
           cb[k][d] = -dp[d];
           sb[d] += cb[k][d];
+          g->sbf[d][sl] = smom[d][sl] - g->sp[d][sl] -
+                          mr * cfg->gravity[d] * s->dt;
         }
         g->sbonded[sl] = 1;
         continue;
@@ -740,8 +746,9 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       }
       fric += lose(g, sl, vref, ct[k], g->sfi);
       imp += lose(g, sl, vref, cn, g->sni);
+      if (bonds) bnd += lose(g, sl, vref, cb[k], g->sbi);
     }
-    booked(s, k0, fric, cuts, imp, rec);
+    booked(s, k0, fric, cuts, imp, bnd, rec);
     if (s->heat) heat_contact(s, slots, ns, drv, fric);
     return;
   }
@@ -754,11 +761,13 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       smom[d][sl] += b + c;
       ct[k][d] -= f * st[d];
       cn[d] = c - ct[k][d];
+      cb[k][d] = b;
     }
     fric += lose(g, sl, vref, ct[k], g->sfi);
     imp += lose(g, sl, vref, cn, g->sni);
+    if (bonds) bnd += lose(g, sl, vref, cb[k], g->sbi);
   }
-  booked(s, k0, fric, cuts, imp, rec);
+  booked(s, k0, fric, cuts, imp, bnd, rec);
   if (s->heat) heat_contact(s, slots, ns, -1, fric);
 }
 
@@ -806,6 +815,7 @@ static void apply_sums(sim *s) {
     s->e.friction += r[DIM + 1];
     s->ncut += (size_t)r[DIM + 2];
     s->e.impact += r[DIM + 3];
+    s->e.bonding += r[DIM + 4];
     if (wk->cbody[k] >= 0) {
       double *F = s->bodies[wk->cbody[k]].force;
       for (d = 0; d < DIM; d++) F[d] += r[d];

@@ -250,11 +250,12 @@ const char *sim_advice(const sim *s) {
 ** studies/grain_budget.lua) */
 const char *sim_budget_advice(const sim *s) {
   const sim_energy *e = &s->e;
-  double num = e->transfer + e->impact, put = e->initial + e->boundary;
+  double num = e->transfer + e->impact + e->bonding;
+  double put = e->initial + e->boundary;
   if (!(e->friction > 0) || !(put > 0) || num < 0.02 * put ||
       num < 0.5 * e->friction)
     return NULL;
-  return "the numerical losses (sim:energy().transfer + impact) are more "
+  return "the numerical losses (sim:energy().numerical) are more "
          "than half the friction work: friction work differs between "
          "transfer schemes and resolutions by as much (docs/verification.md, "
          "energy budget with friction)";
@@ -378,7 +379,8 @@ double sim_total(const sim *s) {
 double sim_residual(const sim *s) {
   const sim_energy *e = &s->e;
   return e->initial + e->boundary + e->thermal - e->friction - e->plastic -
-         e->viscous - e->settled - e->transfer - e->impact - sim_total(s);
+         e->viscous - e->settled - e->transfer - e->impact - e->bonding -
+         sim_total(s);
 }
 
 double sim_scale(const sim *s) {

@@ -105,6 +105,10 @@ typedef struct sim_energy {
                      ** particles, against FLIP's increment (g2p.c) */
   double impact;     /* what the normal impulses of contact and walls
                      ** dissipate: impacts are inelastic at a node */
+  double bonding;    /* what bonded nodes take: the impulses that give
+                     ** the bonded fields one velocity (inelastic at the
+                     ** node) less the stress work bond_remap adds
+                     ** (contact.c, bond.c) */
   /* heat (heat.h), in scenes with heat only: what the sources put into
   ** the particles (friction, beta x plastic, viscous, heat_add's), what
   ** wall friction gave the walls, the cold work (1 - beta) x plastic,

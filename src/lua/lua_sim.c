@@ -742,7 +742,8 @@ static int lenergy(lua_State *L) {
   setnum(L, "latent", s->e.latent);
   setnum(L, "transfer", s->e.transfer);
   setnum(L, "impact", s->e.impact);
-  setnum(L, "numerical", s->e.transfer + s->e.impact);
+  setnum(L, "bonding", s->e.bonding);
+  setnum(L, "numerical", s->e.transfer + s->e.impact + s->e.bonding);
   setnum(L, "initial", s->e.initial);
   setnum(L, "scale", sim_scale(s));
   setnum(L, "total", sim_total(s));

@@ -113,13 +113,14 @@ int run_claim_outdir(const char *dir, int overwrite, char *err,
 
 /* every term of the budget (docs/algorithm.md) is a column: total =
 ** kinetic + strain + potential + lag, residual = initial + boundary_work
-** + thermal_work - dissipated - plastic - viscous - settled - total, and
+** + thermal_work - dissipated - plastic - viscous - settled - transfer
+** - impact - bonding - total, and
 ** scale (sim_scale) the size it is measured against */
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
     "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
     "debonded", "bonded_area", "potential", "lag", "settled", "initial",
-    "scale", "transfer", "impact",
+    "scale", "transfer", "impact", "bonding",
     /* the reaction's heat and burn, the first ignition and the hot spots
     ** of sim:output{hotspots =} (react.h, lua_hotspot.c) */
     "chemical", "reacted", "ignition_time", "hotspots",
@@ -163,17 +164,17 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
   v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;
   v[23] = s->e.initial; v[24] = sim_scale(s);
-  v[25] = s->e.transfer; v[26] = s->e.impact;
+  v[25] = s->e.transfer; v[26] = s->e.impact; v[27] = s->e.bonding;
   /* the reaction's heat and burn; the first ignition (-1 before) */
-  v[27] = s->e.chemical; v[28] = react_mean(s);
-  v[29] = s->t_ignition < INFINITY ? s->t_ignition : -1;
-  lsim_hotspot_row(L, ls, &v[30], &v[31]);
+  v[28] = s->e.chemical; v[29] = react_mean(s);
+  v[30] = s->t_ignition < INFINITY ? s->t_ignition : -1;
+  lsim_hotspot_row(L, ls, &v[31], &v[32]);
   if (s->heat) {
-    v[32] = s->e.heat_friction; v[33] = s->e.heat_plastic;
-    v[34] = s->e.heat_viscous; v[35] = s->e.heat_source;
-    v[36] = s->e.heat_wall; v[37] = s->e.cold; v[38] = s->e.heat_boundary;
-    v[39] = s->e.heat_thermal; v[40] = sim_heat_residual(s);
-    v[41] = sim_residual_all(s);
+    v[33] = s->e.heat_friction; v[34] = s->e.heat_plastic;
+    v[35] = s->e.heat_viscous; v[36] = s->e.heat_source;
+    v[37] = s->e.heat_wall; v[38] = s->e.cold; v[39] = s->e.heat_boundary;
+    v[40] = s->e.heat_thermal; v[41] = sim_heat_residual(s);
+    v[42] = sim_residual_all(s);
   }
   if (NCOLS_3D) { /* the 3-D columns go before the heat's */
     double w[NCOLS_ALL + 3];

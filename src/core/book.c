@@ -60,7 +60,10 @@ void book_finish(sim *s) {
   for (k = 0; k < NSIDES; k++) walls |= s->sides[k].kind == SIDE_WALL;
   /* the dense table carries the walls' friction only (contact acts at
   ** shared nodes, on slots), and its entries at shared nodes are zero */
-  if (walls) s->e.friction += half(g->nnodes, g->m, s->mcut, v, g->fi);
+  if (walls) {
+    s->e.friction += half(g->nnodes, g->m, s->mcut, v, g->fi);
+    s->e.impact += half(g->nnodes, g->m, s->mcut, v, g->ni);
+  }
   s->e.friction += half(g->nslot, g->sm, s->mcut, sv, g->sfi);
   s->e.impact += half(g->nslot, g->sm, s->mcut, sv, g->sni);
 }

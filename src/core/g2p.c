@@ -179,7 +179,8 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   for (i = i0; i < i1; i++) {
     double x[DIM], vp[DIM], v[DIM] = {0}, ac[DIM] = {0}, nv[DIM];
-    double l[NTENS] = {0}, bm[NTENS] = {0}, aref = 0, aff = 0;
+    double l[NTENS] = {0}, bm[NTENS] = {0}, dvr[NTENS] = {0};
+    double aref = 0, aff = 0;
     const body *b = &bd[ps->body[i]];
     int32_t slot[STENCIL_MAX];
     int k;
@@ -197,15 +198,14 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
         for (a = 0; a < DIM; a++) { q[a] = gq[a][n]; fo[a] = gf[a][n]; }
       }
       for (a = 0; a < DIM; a++) { v[a] += w * q[a]; ac[a] += w * fo[a]; }
-      if (apic && lossy) { /* the old affine field moved on by dv */
-        double t = 0, uu[DIM];
+      if (apic && lossy) { /* the old affine part C r, and dv against r */
+        double t = 0, cr[DIM];
         for (a = 0; a < DIM; a++) {
-          uu[a] = vp[a];
-          for (c = 0; c < DIM; c++) uu[a] += C[a * DIM + c][i] * r[c][k];
-          uu[a] += fo[a];
+          cr[a] = 0;
+          for (c = 0; c < DIM; c++) cr[a] += C[a * DIM + c][i] * r[c][k];
+          t += cr[a] * (cr[a] + fo[a]);
+          for (c = 0; c < DIM; c++) dvr[a * DIM + c] += w * fo[a] * r[c][k];
         }
-        for (a = 0; a < DIM; a++) t += uu[a] * uu[a];
-        for (a = 0; a < DIM; a++) t -= fo[a] * fo[a];
         aref += w * t;
       }
       if (full || (apic && kind != SHAPE_BSPLINE2))
@@ -238,22 +238,27 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       else if (xp) nv[a] = v[a] + ac[a]; /* f holds XPIC's correction c (xpic.c) */
       else nv[a] = flip * (vp[a] + ac[a]) + pic * v[a];
     }
-    if (lossy) { /* the transfer's loss against FLIP's v + S dv */
-      double loss = 0, t;
+    if (lossy) { /* the transfer's change of velocity, booked as work */
+      double loss = 0, t = 0;
       if (b->driven) {
-      } else if (apic) { /* against the affine field moved on by dv */
-        t = aref;
-        for (a = 0; a < DIM; a++) t += ac[a] * ac[a];
-        for (a = 0; a < DIM; a++) t -= nv[a] * nv[a];
-        loss = 0.5 * ps->m[i] * t - aff;
+      } else if (apic) {
+        /* sum_i S_ip d_i . (u_i + u'_i), d_i = u'_i - u_i - dv_i, with
+        ** u_i = v + C r_i, u'_i = v' + C' r_i: |u'|^2 - |u|^2 summed
+        ** (the cross terms drop: sum_i S_ip r_i = 0) less dv . (u + u') */
+        for (a = 0; a < DIM; a++) {
+          t += nv[a] * nv[a] - vp[a] * vp[a] - ac[a] * (vp[a] + nv[a]);
+          for (c = 0; c < DIM; c++) t -= bm[a * DIM + c] * dvr[a * DIM + c];
+        }
+        t += aff * 2.0 / ps->m[i] - aref;
+        loss = -0.5 * ps->m[i] * t;
       } else {
-        /* XPIC: S dv = S vL - S v, S v kept by xpic.c in L */
-        double fv[DIM];
-        t = 0;
-        for (a = 0; a < DIM; a++) fv[a] = vp[a] + (xp ? v[a] - ps->L[a][i] : ac[a]);
-        for (a = 0; a < DIM; a++) t += fv[a] * fv[a];
-        for (a = 0; a < DIM; a++) t -= nv[a] * nv[a];
-        loss = 0.5 * ps->m[i] * t;
+        /* d = v' - v - S dv on the mean (v + v') / 2; XPIC: S dv =
+        ** S vL - S v, S v kept by xpic.c in L */
+        for (a = 0; a < DIM; a++) {
+          double sdv = xp ? v[a] - ps->L[a][i] : ac[a];
+          t += (nv[a] - vp[a] - sdv) * (vp[a] + nv[a]);
+        }
+        loss = -0.5 * ps->m[i] * t;
       }
       if (full) { u->loss += loss; u->ke += aff; }
       else { /* kept for remap_kind, which sums them */

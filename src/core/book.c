@@ -31,10 +31,11 @@
 ** stresses see next (measured on the sliding disc, GIMP at 12 cells:
 ** residual -2.9 % before the hold, -0.7 % after).  For APIC, XPIC and
 ** the FLIP/PIC blend v^r is the remap of the velocities the particles
-** are given, not FLIP's; the difference is the transfer's, which
-** e.transfer books against FLIP's increment, so there the booking is
-** not exact (docs/verification.md, the piston pack).  Under USL there
-** is no remap and vL is used.
+** are given, not FLIP's: the rest of their change is the transfer's,
+** which g2p.c books with the same rule on each particle's mean
+** velocity, and the walls' normal impulses are booked here too
+** (boundary.c, wall_split), so that the kinetic energy's change is
+** accounted exactly.  Under USL there is no remap and vL is used.
 */
 #include "sim.h"
 

@@ -97,13 +97,14 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
       fi[e][i] += imp[e];
       if (slot && s->heat) heat_wall_impulse(s, (int32_t)i, e, imp[e]);
     }
-  /* the normal impulse's: an impact's loss at the node, booked whole
-  ** here on the mean of v^n and the wall's velocity, which the node's
-  ** normal velocity now is: the motion the stresses see (held on the
-  ** remap under gravity; otherwise the remap keeps the particles'
+  /* the normal impulse's: an impact's loss at the node, under FLIP
+  ** booked whole here on the mean of v^n and the wall's velocity, which
+  ** the node's normal velocity now is: the motion the stresses see (held
+  ** on the remap under gravity; otherwise the remap keeps the particles'
   ** approach, which the positions do not make, and booked on it the
   ** loss overshoots: a plastic disc thrown at a wall, linear hats,
-  ** 2.7 % of its energy against 0.9 %) */
+  ** 2.7 % of its energy against 0.9 %); split under the lossy transfers
+  ** (wall_split) */
   s->e.friction += loss / m;
   if (s->heat)
     heat_wall_friction(s, slot ? -1 : (int32_t)i, slot ? (int32_t)i : -1,

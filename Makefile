@@ -2,7 +2,8 @@
 #   make deps      install the Debian packages it needs (apt-get)
 #   make           build ./mvmpm
 #   make test      the layers' check, C unit tests, the REPL in tmux, Lua
-#                  verification; ends "N passed, M failed"
+#                  verification; ends "N passed, M failed"; the jobs run
+#                  JOBS at a time (default: the machine's cores)
 #   make layers    every include and every call between objects against the
 #                  layers of src/ (docs/architecture.md)
 #   make test SAN=1  the same under AddressSanitizer/UndefinedBehaviorSanitizer

@@ -92,9 +92,18 @@ function M.run(o)
       re = math.max(re, rho)
     end
   end
+  -- the floor's normal force node by node (sim:wall_nodes): its moments
+  local wn = sim:wall_nodes("bottom")
+  local f0, f2, f4 = 0, 0, 0
+  for i = 1, #wn.force do
+    local r2 = (wn.x[i] - c) ^ 2 + (wn.z[i] - c) ^ 2
+    f0, f2, f4 = f0 + wn.force[i], f2 + wn.force[i] * r2, f4 + wn.force[i] * r2 * r2
+  end
   local W = mass * g
   local a_h = (3 * W * R / (4 * Es)) ^ (1 / 3)
   return {F = Fy, W = W, a_m = math.sqrt(2.5 * s2 / s0), a_e = re + 0.5 * hp, a_h = a_h,
+          a_w = math.sqrt(2.5 * f2 / f0), a_w4 = (35 / 8 * f4 / f0) ^ 0.25, F_w = f0,
+          nw = #wn.force,
           a_q = M.reach(a_h, 0.25 * hp), n = n, ok = ok, t = t, cpu = cpu,
           particles = #x.x, h = h, mass = mass, m_exact = m}
 end

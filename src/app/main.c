@@ -612,13 +612,13 @@ static int cmd_run(int argc, char **argv) {
   ls->progress = !o.quiet;
   if (o.threads) sim_set_threads(&ls->s, o.threads);
   if (o.profile) par_account(1);
-  if (o.profile && !(ls->s.prof = calloc(1, sizeof *ls->s.prof))) {
+  if (o.profile && !(ls->s.work.prof = calloc(1, sizeof *ls->s.work.prof))) {
     fprintf(stderr, "%s: out of memory\n", progname);
     lua_close(L);
     free(stored_scene);
     return 1;
   }
-  if (ls->s.prof) ls->s.prof->last = prof_clock();
+  if (ls->s.work.prof) ls->s.work.prof->last = prof_clock();
   lua_setglobal(L, "sim");
   w0 = now();
   /* no Lua hook: Ctrl-C stops the run at the next step boundary, where a
@@ -671,9 +671,9 @@ static int cmd_run(int argc, char **argv) {
            sim_residual(s),
            100 * sim_residual(s) / (sim_scale(s) > 0 ? sim_scale(s) : 1),
            sim_scale(s));
-    if (s->e.transfer != 0 || s->e.impact != 0)
-      printf("        numerical: transfer %.6g  impact %.6g\n", s->e.transfer,
-             s->e.impact);
+    if (s->e.transfer != 0 || s->e.impact != 0 || s->e.bonding != 0)
+      printf("        numerical: transfer %.6g  impact %.6g  bonding %.6g\n",
+             s->e.transfer, s->e.impact, s->e.bonding);
     if (s->e.plastic != 0 || s->e.viscous != 0 || s->e.thermal != 0 ||
         s->e.settled != 0)
       printf("        plastic %.6g  viscous %.6g  thermal work %.6g  settled "

@@ -53,9 +53,10 @@ static double half(size_t n, const double *m, double mcut,
 }
 
 void book_finish(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   /* after solve_remap (and the walls' hold) p holds v^r; q holds vL */
-  const int remap = s->update != UPDATE_USL;
+  const int remap = cfg->update != UPDATE_USL;
   double *const *v = remap ? g->p : g->q, *const *sv = remap ? g->sp : g->sq;
   int k, walls = 0;
   for (k = 0; k < NSIDES; k++) walls |= s->sides[k].kind == SIDE_WALL;
@@ -67,4 +68,5 @@ void book_finish(sim *s) {
   }
   s->e.friction += half(g->nslot, g->sm, s->mcut, sv, g->sfi);
   s->e.impact += half(g->nslot, g->sm, s->mcut, sv, g->sni);
+  s->e.bonding += half(g->nslot, g->sm, s->mcut, sv, g->sbi);
 }

@@ -120,6 +120,7 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
 }
 
 static void wall_line(sim *s, int k, int line, int first) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   side *sd = &s->sides[k];
   int d = k / 2;
@@ -131,10 +132,10 @@ static void wall_line(sim *s, int k, int line, int first) {
     double imp[DIM];
     int e;
     unsigned char *act = sd->acted + (size_t)(line - first) * nf + j;
-    double gap = s->gap_check && !sd->mirror ? -sd->ext[j] : 0;
+    double gap = cfg->gap_check && !sd->mirror ? -sd->ext[j] : 0;
     *act = 0;
     if (g->m[n] <= s->mcut) continue;
-    if (gap > 0 && !s->gap_step) continue;
+    if (gap > 0 && !cfg->gap_step) continue;
     if (g->head[n] < 0) {
       int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, 0, gap, imp,
                         g->fi, g->ni);
@@ -257,9 +258,10 @@ static double *hm_at(const sim *s, int k, int first, int last, int line,
 ** on the wall lines and on the first line inside, from the particles
 ** within reach of them (serial: the sums run in the particles' order). */
 static void patch_heights(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   const particles *ps = &s->ps;
-  const int kind = s->shape;
+  const int kind = cfg->shape;
   int use[NSIDES], any = 0, k, first[NSIDES], last[NSIDES], inner[NSIDES];
   double xw[NSIDES], reach = 2.6 * g->h;
   stencil_geo geo;
@@ -287,7 +289,7 @@ static void patch_heights(sim *s) {
       d = k / 2;
       dist = (k & 1) ? xw[k] - x[d] : x[d] - xw[k];
       if (dist > reach) continue;
-      if (!have) { stencil_eval(&geo, kind, x, s->lp, &st); have = 1; }
+      if (!have) { stencil_eval(&geo, kind, x, cfg->lp, &st); have = 1; }
       for (a = 0; a < st.n; a++) {
         int ix[DIM], id;
         grid_ijk(g, st.node[a], ix);
@@ -308,13 +310,14 @@ static double patch_mass(const sim *s, int32_t n, int32_t sl) {
 
 static void patch_field(sim *s, int k, const int32_t *cols, int len,
                         int first, int last, int32_t f) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   side *sd = &s->sides[k];
   int d = k / 2, a, line, e, in = inner_line(k, first, last);
   double sign = (k & 1) ? 1.0 : -1.0, M = 0, P[DIM] = {0}, dv[DIM] = {0};
   double M1 = 0, H0 = 0, H1 = 0, dv1[DIM] = {0}, arm = 0;
   double dn, tt = 0, w = 0, loss = 0, c[DIM] = {0}, J[DIM] = {0};
-  const int fric = sd->mu > 0 && s->wall_rule == WALL_COUPLE;
+  const int fric = sd->mu > 0 && cfg->wall_rule == WALL_COUPLE;
   for (a = 0; a < len; a++) {
     size_t j = (size_t)cols[a];
     for (line = first; line <= last; line++) {
@@ -423,8 +426,9 @@ static int patch_touch(const sim *s, int k, size_t j, int first, int last) {
 
 /* whether the material of a patch touches the wall somewhere */
 static int patch_gap(const sim *s, int k, const int32_t *cols, int len) {
+  const sim_cfg *cfg = &s->cfg;
   int a;
-  if (!s->gap_check) return 1;
+  if (!cfg->gap_check) return 1;
   for (a = 0; a < len; a++)
     if (s->sides[k].ext[cols[a]] >= 0) return 1;
   return 0;
@@ -439,13 +443,14 @@ typedef int col_fn(const sim *s, int k, size_t j, int first, int last);
 ** axis is periodic (from 0 otherwise), the patches numbered as the scan
 ** meets them and each patch's columns listed in scan order: in 2-D the
 ** runs of consecutive columns, one patch across a seam.  Works in
-** s->wpatch (sim.c): lab, stack, cols, off; returns the number of patches,
+** s->work.wpatch (sim.c): lab, stack, cols, off; returns the number of patches,
 ** patch p's columns being cols[off[p]] .. cols[off[p + 1] - 1]. */
 static int patch_find(const sim *s, int k, int first, int last, col_fn *in) {
+  const sim_work *wk = &s->work;
   const grid *g = &s->g;
   const side *sd = &s->sides[k];
   const size_t nf = sd->next;
-  int32_t *lab = s->wpatch, *stack = lab + nf, *cols = stack + nf;
+  int32_t *lab = wk->wpatch, *stack = lab + nf, *cols = stack + nf;
   int32_t *off = cols + nf;
   int d = k / 2, e, np = 0, per = 0;
   size_t j, start = 0, a;
@@ -505,10 +510,11 @@ static int patch_find(const sim *s, int k, int first, int last, col_fn *in) {
 ** stopped, as the node rule would, so that nothing goes through a wall
 ** a body is pressed against (normal part only: friction is the patch's) */
 static void patch_deep(sim *s, int k, int first, int last) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   side *sd = &s->sides[k];
   int d = k / 2, line;
-  double sign = (k & 1) ? 1.0 : -1.0, tol = 0.9 * s->lp * g->h, w = 0;
+  double sign = (k & 1) ? 1.0 : -1.0, tol = 0.9 * cfg->lp * g->h, w = 0;
   size_t j, nf = sd->next;
   for (j = 0; j < nf; j++) {
     if (!(sd->ext[j] > tol)) continue;
@@ -545,8 +551,10 @@ static void patch_deep(sim *s, int k, int first, int last) {
 }
 
 static void wall_patches(sim *s, int k, int first, int last) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   side *sd = &s->sides[k];
-  const int32_t *cols = s->wpatch + 2 * sd->next, *off = cols + sd->next;
+  const int32_t *cols = wk->wpatch + 2 * sd->next, *off = cols + sd->next;
   int np, p;
   memset(sd->acted, 0, (size_t)(last - first + 1) * sd->next);
   np = patch_find(s, k, first, last, patch_touch);
@@ -559,7 +567,7 @@ static void wall_patches(sim *s, int k, int first, int last) {
         patch_field(s, k, c, len, first, last, f);
     }
   }
-  if (s->gap_check) patch_deep(s, k, first, last);
+  if (cfg->gap_check) patch_deep(s, k, first, last);
 }
 
 static void driven(sim *s) {
@@ -581,6 +589,7 @@ static void driven(sim *s) {
 }
 
 void boundary_apply(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   int k, heights = 0;
   if (s->ndriven) driven(s);
@@ -589,8 +598,8 @@ void boundary_apply(sim *s) {
     if (s->sides[k].kind != SIDE_WALL) continue;
     wall_lines(g, k, &first, &last);
     /* a mirror plane holds every node on it: no patches */
-    if (s->wall_rule != WALL_NODE && !s->sides[k].mirror) {
-      if (!heights && s->wall_rule == WALL_COUPLE) { patch_heights(s); heights = 1; }
+    if (cfg->wall_rule != WALL_NODE && !s->sides[k].mirror) {
+      if (!heights && cfg->wall_rule == WALL_COUPLE) { patch_heights(s); heights = 1; }
       wall_patches(s, k, first, last);
       continue;
     }
@@ -649,8 +658,9 @@ static void patch_normal(sim *s, int k, const int32_t *cols, int len,
 
 static void patch_normal_side(sim *s, int k, double *const a[DIM],
                               double *const sa[DIM], double v) {
+  sim_work *wk = &s->work;
   const side *sd = &s->sides[k];
-  const int32_t *cols = s->wpatch + 2 * sd->next, *off = cols + sd->next;
+  const int32_t *cols = wk->wpatch + 2 * sd->next, *off = cols + sd->next;
   int first, last, np, p;
   wall_lines(&s->g, k, &first, &last);
   np = patch_find(s, k, first, last, col_acted);
@@ -665,6 +675,7 @@ static void patch_normal_side(sim *s, int k, double *const a[DIM],
 
 void boundary_normal_set(sim *s, double *const a[DIM],
                          double *const sa[DIM], int vel) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   int k;
   for (k = 0; k < NSIDES; k++) {
@@ -673,7 +684,7 @@ void boundary_normal_set(sim *s, double *const a[DIM],
     double v = vel ? sd->v[d] : 0.0;
     size_t j;
     if (sd->kind != SIDE_WALL) continue;
-    if (s->wall_rule != WALL_NODE && !sd->mirror) {
+    if (cfg->wall_rule != WALL_NODE && !sd->mirror) {
       patch_normal_side(s, k, a, sa, v);
       continue;
     }

@@ -144,6 +144,7 @@ static inline int at(const sim *s, int perfield, int32_t n, int32_t f,
 
 /* the mapping of capacity, heat, held capacity and volume gradient */
 STENCIL_INLINE void map_kind(sim *s, const int kind, int perfield) {
+  const sim_cfg *cfg = &s->cfg;
   heat_state *h = s->heat;
   const particles *ps = &s->ps;
   const double *T = particles_comp(ps, s->ftemp, 0);
@@ -160,7 +161,7 @@ STENCIL_INLINE void map_kind(sim *s, const int kind, int perfield) {
     mc = ps->m[i] * s->mats[mi].cv;
     V = ps->vol0[i] * jac(ps, i);
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, cfg->lp, &st);
     for (k = 0; k < st.n; k++) {
       double *a[6], w = st.w[k];
       size_t j;
@@ -179,6 +180,7 @@ STENCIL_INLINE void map_kind(sim *s, const int kind, int perfield) {
 
 /* one substep's heat flow Q from the particles' gradients */
 STENCIL_INLINE void flow_kind(sim *s, const int kind, int perfield) {
+  const sim_cfg *cfg = &s->cfg;
   heat_state *h = s->heat;
   const particles *ps = &s->ps;
   stencil_geo geo;
@@ -193,7 +195,7 @@ STENCIL_INLINE void flow_kind(sim *s, const int kind, int perfield) {
     if (mi < 0 || !(s->mats[mi].kcond > 0)) continue;
     kV = s->mats[mi].kcond * ps->vol0[i] * jac(ps, i);
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, cfg->lp, &st);
     for (k = 0; k < st.n; k++) {
       double Tj;
       sl[k] = at(s, perfield, st.node[k], f, &j[k]);
@@ -211,6 +213,7 @@ STENCIL_INLINE void flow_kind(sim *s, const int kind, int perfield) {
 /* each particle's share of its nodes' increments, and the nodes'
 ** temperature at the particle (the field the reaction sees) */
 STENCIL_INLINE double back_kind(sim *s, const int kind, int perfield) {
+  const sim_cfg *cfg = &s->cfg;
   heat_state *h = s->heat;
   const particles *ps = &s->ps;
   double held = 0;
@@ -227,7 +230,7 @@ STENCIL_INLINE double back_kind(sim *s, const int kind, int perfield) {
     h->tgrid[i] = 0;
     if (mi < 0) continue;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, cfg->lp, &st);
     for (k = 0; k < st.n; k++) {
       size_t j;
       int sl = at(s, perfield, st.node[k], bd->field, &j);
@@ -388,7 +391,8 @@ STENCIL_INLINE int conduct_kind(sim *s, const int kind) {
 }
 
 int conduct(sim *s) {
-  switch (s->shape) {
+  const sim_cfg *cfg = &s->cfg;
+  switch (cfg->shape) {
   case SHAPE_GIMP: return conduct_kind(s, SHAPE_GIMP);
   case SHAPE_BSPLINE2: return conduct_kind(s, SHAPE_BSPLINE2);
   default: return conduct_kind(s, SHAPE_LINEAR);

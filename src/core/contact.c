@@ -51,9 +51,9 @@
 
 #define MAXSLOTS 64
 /* a node's record in a threaded pass: the driven body's force (DIM) and
-** work, the friction work, the bonds cut (a count), and the normal
-** impulses' loss */
-#define CREC (DIM + 4)
+** work, the friction work, the bonds cut (a count), the normal
+** impulses' loss and the bonded impulses' */
+#define CREC (DIM + 5)
 
 /*
 ** The window.  A node's support sees a body's surface over one or two
@@ -203,11 +203,12 @@ static void window(const grid *g, double *const a[DIM], int32_t n, int32_t f,
 **   "plane": the fitted plane, the volume gradients' difference where
 **     it has none. */
 static void normals(sim *s, size_t k0, size_t k1) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
-  double *const *a = s->normals == NORMALS_MASS ? g->sg : g->sv;
-  const int maxv = s->normals == NORMALS_MAXVOLUME;
-  const int pl = s->normals == NORMALS_PLANE;
-  const int R = s->normal_window;
+  double *const *a = cfg->normals == NORMALS_MASS ? g->sg : g->sv;
+  const int maxv = cfg->normals == NORMALS_MAXVOLUME;
+  const int pl = cfg->normals == NORMALS_PLANE;
+  const int R = cfg->normal_window;
   size_t k;
   for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl;
@@ -250,7 +251,7 @@ static void normals_part(void *arg, int t, int nparts) {
   normals(s, k0, k1);
 }
 
-void contact_normals(sim *s) { par_run(s->par, normals_part, s); }
+void contact_normals(sim *s) { par_run(s->work.par, normals_part, s); }
 
 /*
 ** With a driven partner, the normal traction the bond carries at node n
@@ -348,8 +349,9 @@ static double symnn(const double *T, size_t cs, const double n[DIM]) {
 }
 
 static int fitted(const sim *s, int32_t n, int32_t sl, int32_t o, double *t) {
+  const sim_work *wk = &s->work;
   const grid *g = &s->g;
-  const double *b = s->bfit;
+  const double *b = wk->bfit;
   size_t N = g->nnodes;
   int32_t fr = g->sfield[sl], fo = g->sfield[o];
   double m[2][5] = {{0}}, nn[DIM], A[2], B[2], xs, e2, w0, w1;
@@ -366,8 +368,8 @@ static int fitted(const sim *s, int32_t n, int32_t sl, int32_t o, double *t) {
     if (j < 0) continue;
     W = b[BF_W * N + j];
     if (g->head[j] >= 0 || !(W > 0)) continue;
-    if (s->bffield[j] == fr) sd = 0;
-    else if (s->bffield[j] == fo) sd = 1;
+    if (wk->bffield[j] == fr) sd = 0;
+    else if (wk->bffield[j] == fo) sd = 1;
     else continue;
     for (a = 0; a < DIM; a++) dl[a] = off[a];
     xi0 = vec_dot(dl, nn);
@@ -459,13 +461,14 @@ static void fits_part(void *arg, int t, int nparts) {
 #define BOND_PATCH_MAX 16
 
 static double traction(const sim *s, int32_t n, int32_t sl, int drv) {
+  const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   int32_t f = g->sfield[sl];
   double F = 0, A = 0;
-  int i[DIM], off[DIM], R = BOND_PATCH, fit = s->bond_fit && !drv;
-  if (fit && s->bond_length * g->inv_h > R)
-    R = s->bond_length * g->inv_h < BOND_PATCH_MAX
-            ? (int)ceil(s->bond_length * g->inv_h - 1e-9) : BOND_PATCH_MAX;
+  int i[DIM], off[DIM], R = BOND_PATCH, fit = cfg->bond_fit && !drv;
+  if (fit && cfg->bond_length * g->inv_h > R)
+    R = cfg->bond_length * g->inv_h < BOND_PATCH_MAX
+            ? (int)ceil(cfg->bond_length * g->inv_h - 1e-9) : BOND_PATCH_MAX;
   grid_ijk(g, n, i);
   win_first(off, R);
   do {
@@ -508,12 +511,13 @@ static double left(const grid *g, int32_t sl) {
 ** this step on.  Returns 1 if bonded, 0 if not, -1 if cut now.
 */
 static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   const pairlaw *l;
   double b, t, cap, bs = left(g, sl), bo = left(g, o);
   if (!(bs > 0) || !(bo > 0 || odriven)) return 0;
   l = sim_law_of(s, g->sfield[sl], g->sfield[o]);
-  cap = l ? l->bond : s->bond_default;
+  cap = l ? l->bond : cfg->bond_default;
   if (!(cap > 0)) return 0;
   b = odriven || bs < bo ? bs : bo;
   t = traction(s, n, sl, odriven);
@@ -540,17 +544,20 @@ static double lose(const grid *g, int32_t sl, const double vref[DIM],
   return -w / mr;
 }
 
-/* node k's friction work, bonds cut and normal impulses' loss: recorded
-** (a threaded pass) or added now */
+/* node k's friction work, bonds cut, normal and bonded impulses' loss:
+** recorded (a threaded pass) or added now */
 static void booked(sim *s, size_t k, double fric, int cuts, double imp,
-                   int rec) {
+                   double bnd, int rec) {
+  sim_work *wk = &s->work;
   if (rec) {
-    s->crec[CREC * k + DIM + 1] = fric;
-    s->crec[CREC * k + DIM + 2] = cuts;
-    s->crec[CREC * k + DIM + 3] = imp;
+    wk->crec[CREC * k + DIM + 1] = fric;
+    wk->crec[CREC * k + DIM + 2] = cuts;
+    wk->crec[CREC * k + DIM + 3] = imp;
+    wk->crec[CREC * k + DIM + 4] = bnd;
   } else {
     s->e.friction += fric;
     s->e.impact += imp;
+    s->e.bonding += bnd;
     s->ncut += (size_t)cuts;
   }
 }
@@ -614,16 +621,18 @@ static int opening(const sim *s, int32_t sl, int32_t o, double *gap) {
 ** and work for contact_apply to add up in order (a threaded pass) */
 static void node(sim *s, size_t k0, double *const mom[DIM],
                  double *const smom[DIM], int rec) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   grid *g = &s->g;
   int32_t n = g->shared[k0];
   /* each slot's correction, bonded (cb) and by contact (cc) */
   double cb[MAXSLOTS][DIM], cc[MAXSLOTS][DIM];
   double ct[MAXSLOTS][DIM]; /* the tangential part of cc: friction's */
   double sb[DIM] = {0}, sc[DIM] = {0}, st[DIM] = {0}, vref[DIM], M = g->m[n];
-  double fric = 0, imp = 0, cn[DIM];
+  double fric = 0, imp = 0, bnd = 0, cn[DIM];
   int32_t sl, slots[MAXSLOTS], drv = -1;
   int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
-  if (rec) s->cbody[k0] = -1;
+  if (rec) wk->cbody[k0] = -1;
   if (M <= s->mcut) return;
   for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl]) {
     slots[ns++] = sl;
@@ -661,13 +670,17 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       int b = bonded(s, n, sl, o, drv >= 0);
       cuts += b < 0;
       if (b > 0) {
-        /* no energy is booked for it: the fields' nodal velocities differ
-        ** only by how the particles sample them, as on one shared field,
-        ** and FLIP keeps each particle's own motion (measured: booking
-        ** sum |dp|^2 / 2m as lost left the budget short by exactly that) */
+        /* the fields' nodal velocities differ by how their particles
+        ** sample the motion; making them one is an inelastic collision
+        ** of the fields at the node, whose loss is booked as a contact
+        ** impulse's (lose(), e.bonding).  The slot's internal force
+        ** impulse, dt f less gravity's, is kept for the work the
+        ** stresses do on the common velocity (bond_remap) */
         for (d = 0; d < DIM; d++) {
           cb[k][d] = -dp[d];
           sb[d] += cb[k][d];
+          g->sbf[d][sl] = smom[d][sl] - g->sp[d][sl] -
+                          mr * cfg->gravity[d] * s->dt;
         }
         g->sbonded[sl] = 1;
         continue;
@@ -675,12 +688,12 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     }
     if (!(dn > 0)) continue;
     fn = 1;
-    if (s->release == RELEASE_OPEN && opening(s, sl, o, &gap)) {
+    if (cfg->release == RELEASE_OPEN && opening(s, sl, o, &gap)) {
       fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);
       if (!(fn > 0)) continue;
-    } else if (s->gap_check) {
+    } else if (cfg->gap_check) {
       gap = -(g->sext[sl] + other);
-      if (s->gap_step) {
+      if (cfg->gap_step) {
         fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);
         if (!(fn > 0)) continue;
       } else if (gap > 0)
@@ -717,8 +730,8 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       if (!rec) F[d] += sum / s->dt;
     }
     if (rec) {
-      double *r = s->crec + CREC * k0;
-      s->cbody[k0] = bi;
+      double *r = wk->crec + CREC * k0;
+      wk->cbody[k0] = bi;
       for (d = 0; d < DIM; d++) r[d] = (sb[d] + sc[d]) / s->dt;
       r[DIM] = w;
     } else
@@ -733,8 +746,9 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       }
       fric += lose(g, sl, vref, ct[k], g->sfi);
       imp += lose(g, sl, vref, cn, g->sni);
+      if (bonds) bnd += lose(g, sl, vref, cb[k], g->sbi);
     }
-    booked(s, k0, fric, cuts, imp, rec);
+    booked(s, k0, fric, cuts, imp, bnd, rec);
     if (s->heat) heat_contact(s, slots, ns, drv, fric);
     return;
   }
@@ -747,11 +761,13 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       smom[d][sl] += b + c;
       ct[k][d] -= f * st[d];
       cn[d] = c - ct[k][d];
+      cb[k][d] = b;
     }
     fric += lose(g, sl, vref, ct[k], g->sfi);
     imp += lose(g, sl, vref, cn, g->sni);
+    if (bonds) bnd += lose(g, sl, vref, cb[k], g->sbi);
   }
-  booked(s, k0, fric, cuts, imp, rec);
+  booked(s, k0, fric, cuts, imp, bnd, rec);
   if (s->heat) heat_contact(s, slots, ns, -1, fric);
 }
 
@@ -770,10 +786,11 @@ static int grow(void **p, size_t *cap, size_t need, size_t size) {
 }
 
 int contact_prepare(sim *s) {
+  sim_work *wk = &s->work;
   const grid *g = &s->g;
-  size_t nc = s->cnodecap;
-  if (grow((void **)&s->crec, &nc, g->nshared, CREC * sizeof *s->crec) ||
-      grow((void **)&s->cbody, &s->cnodecap, g->nshared, sizeof *s->cbody))
+  size_t nc = wk->cnodecap;
+  if (grow((void **)&wk->crec, &nc, g->nshared, CREC * sizeof *wk->crec) ||
+      grow((void **)&wk->cbody, &wk->cnodecap, g->nshared, sizeof *wk->cbody))
     return -1;
   return 0;
 }
@@ -788,17 +805,19 @@ static void apply_part(void *arg, int t, int nparts) {
 ** pass adds them: the sums are the same bits for any count of threads,
 ** and the same as with none */
 static void apply_sums(sim *s) {
+  sim_work *wk = &s->work;
   const grid *g = &s->g;
   size_t k;
   for (k = 0; k < g->nshared; k++) {
-    const double *r = s->crec + CREC * k;
+    const double *r = wk->crec + CREC * k;
     int d;
     if (g->m[g->shared[k]] <= s->mcut) continue;
     s->e.friction += r[DIM + 1];
     s->ncut += (size_t)r[DIM + 2];
     s->e.impact += r[DIM + 3];
-    if (s->cbody[k] >= 0) {
-      double *F = s->bodies[s->cbody[k]].force;
+    s->e.bonding += r[DIM + 4];
+    if (wk->cbody[k] >= 0) {
+      double *F = s->bodies[wk->cbody[k]].force;
       for (d = 0; d < DIM; d++) F[d] += r[d];
       s->e.boundary += r[DIM];
     }
@@ -826,13 +845,15 @@ static void bond_sums(sim *s) {
 ** call without contact_prepare's room takes them in order, with the
 ** same numbers. */
 void contact_apply(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   grid *g = &s->g;
   size_t k;
   s->ncut = 0;
   s->bond_area = 0;
-  if (s->fbond >= 0 && s->bond_fit) par_run(s->par, fits_part, s);
-  if (s->cnodecap >= g->nshared) {
-    par_run(s->par, apply_part, s);
+  if (s->fbond >= 0 && cfg->bond_fit) par_run(wk->par, fits_part, s);
+  if (wk->cnodecap >= g->nshared) {
+    par_run(wk->par, apply_part, s);
     apply_sums(s);
   } else
     for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);

@@ -24,7 +24,7 @@ static double rel(const sim *s, int d, double x, double ref) {
 
 int diag_bodies(const sim *s, bdiag *out) {
   const particles *ps = &s->ps;
-  const double a = 2.0 * s->lp * s->g.h;
+  const double a = 2.0 * s->cfg.lp * s->g.h;
   double *ref = malloc((size_t)s->nbody * DIM * sizeof *ref);
   size_t i;
   int b, d;

@@ -27,13 +27,12 @@ static int cmp(const void *pa, const void *pb) {
   return a->r < b->r ? -1 : a->r > b->r;
 }
 
-/* the grid as the next step begins, up to the normals and the reach */
-static int rebuild(sim *s) {
+int diag_grid(sim *s) {
   if (sim_prepare(s)) return -1;
   if (!s->started) sim_begin(s);
   grid_reset(&s->g, 0);
   p2g_plan(s);
-  s->g.moments = s->normals == NORMALS_PLANE;
+  s->g.moments = s->cfg.normals == NORMALS_PLANE;
   if ((s->nfield > 1 || s->ndriven) && p2g_mark(s)) {
     snprintf(s->err, sizeof s->err, "contacts: out of memory for shared nodes");
     return -1;
@@ -41,7 +40,7 @@ static int rebuild(sim *s) {
   p2g(s);
   solve_momentum(s);
   if (s->g.nshared) contact_normals(s);
-  if (s->g.nshared && s->gap_check) reach(s);
+  if (s->cfg.gap_check) reach(s); /* the walls' too (diag_wall.h) */
   return 0;
 }
 
@@ -72,7 +71,7 @@ static void node_recs(const sim *s, size_t k, rec *rc, size_t *nr) {
     }
     if (drv >= 0) o = drv;
     if (o < 0 || !(dn > 0)) continue;
-    if (s->gap_check && g->sext[sl] + other < 0) continue;
+    if (s->cfg.gap_check && g->sext[sl] + other < 0) continue;
     e = &rc[(*nr)++];
     e->r = g->sfield[sl];
     e->o = g->sfield[o];
@@ -92,7 +91,7 @@ int diag_contacts(sim *s, contact_pair **out, size_t *n) {
   *out = NULL;
   *n = 0;
   if (!s->ps.n) return 0;
-  if (rebuild(s)) return -1;
+  if (diag_grid(s)) return -1;
   if (!g->nshared || !(s->dt > 0)) return 0;
   rc = malloc(g->nslot * sizeof *rc);
   fbody = malloc((size_t)s->nfield * sizeof *fbody);

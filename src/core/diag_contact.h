@@ -25,6 +25,12 @@ typedef struct contact_pair {
   long nodes;       /* shared nodes where they press */
 } contact_pair;
 
+/* The grid as the next step begins: p2g, the momentum update, the
+** normals and, with the separation check, the reach (walls and shared
+** nodes), for the diagnostics that ask the step's rules without applying
+** them.  0, or -1 with s->err (out of memory) */
+int diag_grid(sim *s);
+
 /* The pairs in contact now, sorted by (a, b), into *out (malloc'd, the
 ** caller frees; NULL when none) and their count into *n.  Rebuilds the
 ** grid (the next step rebuilds it again: the run's numbers do not

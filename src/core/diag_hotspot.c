@@ -56,7 +56,7 @@ int diag_hotspots(sim *s, double threshold, double link, hotspots *out) {
   const double *T, *lam = NULL;
   size_t *hot = NULL, *up = NULL, *bin = NULL, *start = NULL, *order = NULL;
   size_t *slot = NULL, nhot = 0, nbin = 1, i, j, k;
-  double L = link * s->g.h / s->ppc;
+  double L = link * s->g.h / s->cfg.ppc;
   long nb[DIM];
   int d, rc = -1;
   out->n = 0;

@@ -45,14 +45,15 @@
 ** each particle's loss in L[0] until the remap pass, whose sums run in
 ** chunk order, adds it up: the same at any thread count.
 */
-static int g2p_lossy(const sim *s) {
-  return s->transfer != TRANSFER_FLIP || s->flip < 1;
+static int g2p_lossy(const sim_cfg *cfg) {
+  return cfg->transfer != TRANSFER_FLIP || cfg->flip < 1;
 }
 
 /* APIC: the affine field's kinetic energy, sum_p 1/2 m_p sum_i S_ip
 ** |C_p r_ip|^2, at the particles' present positions (the state before
 ** the first step: sim_measure) */
 double g2p_affine_energy(const sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   const particles *ps = &s->ps;
   const double *C[NTENS];
   double r[DIM][STENCIL_MAX], e = 0;
@@ -60,7 +61,7 @@ double g2p_affine_energy(const sim *s) {
   stencil st;
   size_t i;
   int a, b;
-  if (s->transfer != TRANSFER_APIC || s->faff < 0) return 0;
+  if (cfg->transfer != TRANSFER_APIC || s->faff < 0) return 0;
   for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   stencil_geo_init(&geo, &s->g);
   for (i = 0; i < ps->n; i++) {
@@ -69,7 +70,7 @@ double g2p_affine_energy(const sim *s) {
     for (a = 0; a < NTENS; a++) zero &= C[a][i] == 0;
     if (zero) continue;
     for (a = 0; a < DIM; a++) x[a] = ps->x[a][i];
-    stencil_eval_r(&geo, s->shape, x, s->lp, &st, r);
+    stencil_eval_r(&geo, cfg->shape, x, cfg->lp, &st, r);
     for (k = 0; k < st.n; k++) {
       double t = 0;
       for (a = 0; a < DIM; a++) {
@@ -84,7 +85,7 @@ double g2p_affine_energy(const sim *s) {
   return e;
 }
 
-/* the sums of one chunk of particles (par.h), kept in s->red */
+/* the sums of one chunk of particles (par.h), kept in s->work.red */
 typedef struct sums {
   double ke, mom[DIM], am[3], v2max, pe, loss;
   size_t out;
@@ -159,13 +160,15 @@ enum { G2P_MOVE, G2P_SCATTER, G2P_SCATTER1, G2P_GATHER };
 STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
                              const int mode, const int apic, size_t i0,
                              size_t i1, int blk, sums *u) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double dt = s->dt, flip = s->flip, pic = 1.0 - flip, lp = s->lp;
+  const double dt = s->dt, flip = cfg->flip, pic = 1.0 - flip, lp = cfg->lp;
   const int full = mode == G2P_MOVE, rowlen = stencil_rowlen(kind);
   const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
-  const int xp = s->transfer == TRANSFER_XPIC, lossy = g2p_lossy(s);
+  const int xp = cfg->transfer == TRANSFER_XPIC, lossy = g2p_lossy(cfg);
   /* the dense grid only through these: loads need not wait for stores */
   const double *restrict gq[DIM], *restrict gf[DIM];
   double *restrict gp[DIM];
@@ -183,7 +186,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   int a, c;
   for (a = 0; a < DIM; a++) { gq[a] = g->q[a]; gf[a] = g->f[a]; gp[a] = g->p[a]; }
   stencil_geo_init(&geo, g);
-  box_init(&bx, g, s->gravity);
+  box_init(&bx, g, cfg->gravity);
   if (apic)
     for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   for (i = i0; i < i1; i++) {
@@ -283,7 +286,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     } else if (scatter) {
       const double mp = ps->m[i];
       if (mode == G2P_SCATTER1 &&
-          !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, 1, mine))
+          !bands_rows(&wk->bands, &geo, kind, x[BANDS_DIM], blk, 1, mine))
         continue;
       for (k = 0; k < st.n; k++) {
         int32_t n = st.node[k];
@@ -314,10 +317,12 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
 STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
                                  const int apic, const int split, size_t i0,
                                  size_t i1, int blk) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double lp = s->lp;
+  const double lp = cfg->lp;
   const int rowlen = stencil_rowlen(kind);
   double *restrict gp[DIM];
   const double *C[NTENS] = {NULL};
@@ -338,7 +343,7 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
     int k;
     for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; nv[a] = ps->v[a][i]; }
     if (split &&
-        !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, 2, mine))
+        !bands_rows(&wk->bands, &geo, kind, x[BANDS_DIM], blk, 2, mine))
       continue;
     if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
     else stencil_eval(&geo, kind, x, lp, &st);
@@ -365,7 +370,8 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
 
 STENCIL_INLINE void g2p_shape(sim *s, const int kind, int mode, size_t i0,
                               size_t i1, int blk, sums *u) {
-  int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
+  const sim_cfg *cfg = &s->cfg;
+  int shared = s->g.nshared > 0, apic = cfg->transfer == TRANSFER_APIC;
 #define G2PA(SH, MO)                                                     \
   if (apic) g2p_kind(s, kind, SH, MO, 1, i0, i1, blk, u);                \
   else g2p_kind(s, kind, SH, MO, 0, i0, i1, blk, u);
@@ -383,7 +389,8 @@ STENCIL_INLINE void g2p_shape(sim *s, const int kind, int mode, size_t i0,
 
 static void g2p_range(sim *s, int mode, size_t i0, size_t i1, int blk,
                       sums *u) {
-  switch (s->shape) {
+  const sim_cfg *cfg = &s->cfg;
+  switch (cfg->shape) {
   case SHAPE_GIMP: g2p_shape(s, SHAPE_GIMP, mode, i0, i1, blk, u); break;
   case SHAPE_BSPLINE2:
     g2p_shape(s, SHAPE_BSPLINE2, mode, i0, i1, blk, u);
@@ -394,7 +401,8 @@ static void g2p_range(sim *s, int mode, size_t i0, size_t i1, int blk,
 
 STENCIL_INLINE void scatter_shape(sim *s, const int kind, int split,
                                   size_t i0, size_t i1, int blk) {
-  int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
+  const sim_cfg *cfg = &s->cfg;
+  int shared = s->g.nshared > 0, apic = cfg->transfer == TRANSFER_APIC;
 #define SCA(SH, AP)                                                      \
   if (split) scatter_kind(s, kind, SH, AP, 1, i0, i1, blk);              \
   else scatter_kind(s, kind, SH, AP, 0, i0, i1, blk);
@@ -404,7 +412,8 @@ STENCIL_INLINE void scatter_shape(sim *s, const int kind, int split,
 }
 
 static void scatter_range(sim *s, int split, size_t i0, size_t i1, int blk) {
-  switch (s->shape) {
+  const sim_cfg *cfg = &s->cfg;
+  switch (cfg->shape) {
   case SHAPE_GIMP: scatter_shape(s, SHAPE_GIMP, split, i0, i1, blk); break;
   case SHAPE_BSPLINE2:
     scatter_shape(s, SHAPE_BSPLINE2, split, i0, i1, blk);
@@ -416,7 +425,8 @@ static void scatter_range(sim *s, int split, size_t i0, size_t i1, int blk) {
 /* the sums of every chunk, added in chunk order: the same for any
 ** thread count */
 static void finish(sim *s) {
-  const sums *red = s->red;
+  sim_work *wk = &s->work;
+  const sums *red = wk->red;
   sums u = {0};
   size_t c, nc = par_nchunks(s->ps.n);
   int d;
@@ -443,7 +453,7 @@ typedef struct g2p_job { sim *s; int mode; } g2p_job;
 /* USL: whole chunks, each with its own sums */
 static void move_part(void *arg, int t, int nparts) {
   g2p_job *j = arg;
-  sums *red = j->s->red;
+  sums *red = j->s->work.red;
   size_t n = j->s->ps.n, c, c0, c1, i0, i1;
   par_chunks(n, t, nparts, &c0, &c1);
   for (c = c0; c < c1; c++) {
@@ -459,7 +469,7 @@ static void move_part(void *arg, int t, int nparts) {
 static void split_part(void *arg, int t, int nparts) {
   g2p_job *j = arg;
   size_t i0, i1;
-  bands_span(&j->s->bands, t, j->mode == G2P_SCATTER1 ? 1 : 2, &i0, &i1);
+  bands_span(&j->s->work.bands, t, j->mode == G2P_SCATTER1 ? 1 : 2, &i0, &i1);
   if (j->mode == G2P_SCATTER1)
     g2p_range(j->s, G2P_SCATTER1, i0, i1, t, NULL);
   else
@@ -475,17 +485,19 @@ static void gather_part(void *arg, int t, int nparts) {
 }
 
 void g2p(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   g2p_job j = {s, G2P_MOVE};
-  if (s->update == UPDATE_USL) {
-    par_run(s->par, move_part, &j);
+  if (cfg->update == UPDATE_USL) {
+    par_run(wk->par, move_part, &j);
     finish(s);
-  } else if (s->bands.nb) { /* the plan p2g made */
+  } else if (wk->bands.nb) { /* the plan p2g made */
     j.mode = G2P_SCATTER1;
-    par_run(s->par, split_part, &j);
+    par_run(wk->par, split_part, &j);
     j.mode = G2P_SCATTER;
-    par_run(s->par, split_part, &j);
-  } else if (par_threads(s->par) > 1) {
-    par_run(s->par, gather_part, &j);
+    par_run(wk->par, split_part, &j);
+  } else if (par_threads(wk->par) > 1) {
+    par_run(wk->par, gather_part, &j);
     scatter_range(s, 0, 0, s->ps.n, 0);
   } else
     g2p_range(s, G2P_SCATTER, 0, s->ps.n, 0, NULL);
@@ -494,11 +506,12 @@ void g2p(sim *s) {
 /* MUSL pass 2: gradient from the remapped velocities (in p), move with vL */
 STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
                                size_t i0, size_t i1, sums *u) {
+  const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double dt = s->dt, lp = s->lp;
-  const int lossy = g2p_lossy(s), apic = s->transfer == TRANSFER_APIC;
+  const double dt = s->dt, lp = cfg->lp;
+  const int lossy = g2p_lossy(cfg), apic = cfg->transfer == TRANSFER_APIC;
   const double *restrict gp[DIM], *restrict gq[DIM];
   stencil_geo geo;
   box bx;
@@ -507,7 +520,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   int a, c;
   for (a = 0; a < DIM; a++) { gp[a] = g->p[a]; gq[a] = g->q[a]; }
   stencil_geo_init(&geo, g);
-  box_init(&bx, g, s->gravity);
+  box_init(&bx, g, cfg->gravity);
   for (i = i0; i < i1; i++) {
     double x[DIM], v[DIM] = {0}, l[NTENS] = {0};
     int32_t f = bd[ps->body[i]].field, slot[STENCIL_MAX];
@@ -552,8 +565,9 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
 }
 
 static void remap_range(sim *s, size_t i0, size_t i1, sums *u) {
+  const sim_cfg *cfg = &s->cfg;
   int shared = s->g.nshared > 0;
-  switch (s->shape) {
+  switch (cfg->shape) {
   case SHAPE_GIMP:
     if (shared) remap_kind(s, SHAPE_GIMP, 1, i0, i1, u);
     else remap_kind(s, SHAPE_GIMP, 0, i0, i1, u);
@@ -570,7 +584,8 @@ static void remap_range(sim *s, size_t i0, size_t i1, sums *u) {
 
 static void remap_part(void *arg, int t, int nparts) {
   sim *s = arg;
-  sums *red = s->red;
+  sim_work *wk = &s->work;
+  sums *red = wk->red;
   size_t n = s->ps.n, c, c0, c1, i0, i1;
   par_chunks(n, t, nparts, &c0, &c1);
   for (c = c0; c < c1; c++) {
@@ -582,6 +597,7 @@ static void remap_part(void *arg, int t, int nparts) {
 }
 
 void g2p_remap(sim *s) {
-  par_run(s->par, remap_part, s);
+  sim_work *wk = &s->work;
+  par_run(wk->par, remap_part, s);
   finish(s);
 }

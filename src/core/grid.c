@@ -74,6 +74,7 @@ static void slots_free(grid *g) {
     free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
     free(g->sg[d]); free(g->sn[d]);
     free(g->sfi[d]); free(g->sni[d]);
+    free(g->sbi[d]); free(g->sbf[d]);
   }
 }
 
@@ -150,6 +151,7 @@ static int slots_grow(grid *g) {
     GROW(g->sq[d], double, cap); GROW(g->sg[d], double, cap);
     GROW(g->sn[d], double, cap);
     GROW(g->sfi[d], double, cap); GROW(g->sni[d], double, cap);
+    GROW(g->sbi[d], double, cap); GROW(g->sbf[d], double, cap);
   }
   g->slotcap = cap;
   return 0;
@@ -203,6 +205,7 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
     memset(g->sn[d] + s0, 0, n);
     memset(g->sfi[d] + s0, 0, n);
     memset(g->sni[d] + s0, 0, n);
+    memset(g->sbi[d] + s0, 0, n); /* sbf: written where it is read */
   }
   if (g->moments) {
     memset(g->sw + s0, 0, n);

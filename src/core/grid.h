@@ -43,6 +43,10 @@ typedef struct grid {
   double *sn[DIM];     /* outward unit normal of the field's body */
   double *sfi[DIM], *sni[DIM]; /* friction impulses (contact and walls,
                                   as fi) and contact's normal ones */
+  /* the impulse that gave a bonded slot its node's velocity, and the
+  ** slot's dt f less gravity's, the internal force's impulse (contact.c;
+  ** book.c and bond_remap book their work) */
+  double *sbi[DIM], *sbf[DIM];
   double *sext;        /* reach of the field's material along its normal */
   /* bonds (bond.c), filled only in scenes with bonds: the field's
   ** mass-weighted bond strength, its volume gradient sum_p V_p grad S_ip

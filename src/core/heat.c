@@ -194,6 +194,7 @@ void heat_wall_friction(sim *s, int32_t n, int32_t sl, double loss) {
 
 /* the nodes' friction heat to the particles, per stencil kind */
 STENCIL_INLINE double gather_kind(sim *s, const int kind) {
+  const sim_cfg *cfg = &s->cfg;
   heat_state *h = s->heat;
   const grid *g = &s->g;
   particles *ps = &s->ps;
@@ -210,7 +211,7 @@ STENCIL_INLINE double gather_kind(sim *s, const int kind) {
     int k, d;
     if (s->bmat[ps->body[i]] < 0) continue;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-    stencil_eval(&geo, kind, x, s->lp, &st);
+    stencil_eval(&geo, kind, x, cfg->lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       if (g->head[n] >= 0) {
@@ -230,8 +231,9 @@ STENCIL_INLINE double gather_kind(sim *s, const int kind) {
 
 /* the nodes' friction heat to the particles, booked as friction heat */
 static void gather(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   double fr;
-  switch (s->shape) {
+  switch (cfg->shape) {
   case SHAPE_GIMP: fr = gather_kind(s, SHAPE_GIMP); break;
   case SHAPE_BSPLINE2: fr = gather_kind(s, SHAPE_BSPLINE2); break;
   default: fr = gather_kind(s, SHAPE_LINEAR);
@@ -254,9 +256,10 @@ static double half_work(double *const c[DIM], double *const v[DIM], size_t i) {
 }
 
 void heat_finish(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   heat_state *h = s->heat;
   const grid *g = &s->g;
-  const int remap = s->update != UPDATE_USL;
+  const int remap = cfg->update != UPDATE_USL;
   double *const *v = remap ? g->p : g->q, *const *sv = remap ? g->sp : g->sq;
   size_t n;
   memset(h->hn, 0, g->nnodes * sizeof *h->hn);

@@ -46,6 +46,7 @@ const pairlaw *sim_law_of(const sim *s, int32_t a, int32_t b) {
 }
 
 double sim_law(const sim *s, int32_t a, int32_t b) {
+  const sim_cfg *cfg = &s->cfg;
   const pairlaw *l = sim_law_of(s, a, b);
-  return l ? l->mu : s->mu_default;
+  return l ? l->mu : cfg->mu_default;
 }

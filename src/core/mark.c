@@ -73,10 +73,11 @@ static int room(marks *mk, int np) {
 ** is marked once. */
 STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
                               int pass, size_t i0, size_t i1) {
+  sim_work *wk = &s->work;
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
-  marks *mk = &s->marks;
+  marks *mk = &wk->marks;
   const size_t base = (size_t)t * mk->cap, cap = mk->cap;
   const int nw = shape_width(kind);
   int32_t *owner = g->owner, *head = g->head, *mf = mk->field, *mn = mk->next;
@@ -102,7 +103,7 @@ STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
     if (n0 == last && f == lastf) continue;
     last = n0;
     lastf = f;
-    if (split && !bands_rows(&s->bands, &geo, kind, ps->x[BANDS_DIM][i], t,
+    if (split && !bands_rows(&wk->bands, &geo, kind, ps->x[BANDS_DIM][i], t,
                              pass, mine))
       continue;
     /* rows along BANDS_DIM (the last axis) outermost, x innermost: k
@@ -152,9 +153,11 @@ typedef struct mark_job { sim *s; int split, pass; } mark_job;
 static void mark_part(void *arg, int t, int nparts) {
   mark_job *j = arg;
   sim *s = j->s;
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   size_t i0 = 0, i1 = s->ps.n;
-  if (j->split) bands_span(&s->bands, t, j->pass, &i0, &i1);
-  switch (s->shape) {
+  if (j->split) bands_span(&wk->bands, t, j->pass, &i0, &i1);
+  switch (cfg->shape) {
   case SHAPE_GIMP: mark_kind(s, SHAPE_GIMP, j->split, t, j->pass, i0, i1); break;
   case SHAPE_BSPLINE2:
     mark_kind(s, SHAPE_BSPLINE2, j->split, t, j->pass, i0, i1);
@@ -164,8 +167,8 @@ static void mark_part(void *arg, int t, int nparts) {
 }
 
 /* fn over the parts of the marking: the pool's threads, or the caller */
-static void run(sim *s, par_fn fn, void *arg) {
-  if (s->marks.nparts > 1) par_run(s->par, fn, arg);
+static void run(const sim_work *wk, par_fn fn, void *arg) {
+  if (wk->marks.nparts > 1) par_run(wk->par, fn, arg);
   else fn(arg, 0, 1);
 }
 
@@ -173,8 +176,9 @@ static void run(sim *s, par_fn fn, void *arg) {
 ** the shared list, and the count of their slots */
 static void order_part(void *arg, int t, int nparts) {
   sim *s = arg;
+  sim_work *wk = &s->work;
   grid *g = &s->g;
-  const marks *mk = &s->marks;
+  const marks *mk = &wk->marks;
   size_t base = (size_t)t * mk->cap, a = base, ae = base + mk->nev1[t];
   size_t b = ae, be = base + mk->nev[t], at = mk->at[t], nsl = 0;
   while (a < ae || b < be) {
@@ -183,15 +187,16 @@ static void order_part(void *arg, int t, int nparts) {
     g->shared[at++] = n;
     for (m = g->head[n], nsl++; m >= 0; m = mk->next[m]) nsl++;
   }
-  s->marks.slots[t] = nsl;
+  wk->marks.slots[t] = nsl;
 }
 
 /* Step 3, part t: the slots of its shared nodes, from its first, each
 ** node's in list order (its marks newest first, then the owner) */
 static void slots_part(void *arg, int t, int nparts) {
   sim *s = arg;
+  sim_work *wk = &s->work;
   grid *g = &s->g;
-  const marks *mk = &s->marks;
+  const marks *mk = &wk->marks;
   size_t k, s0 = mk->slots[t], sl = s0;
   for (k = mk->at[t]; k < mk->at[t] + mk->nev[t]; k++) {
     int32_t n = g->shared[k], m = g->head[n];
@@ -210,9 +215,7 @@ static void slots_part(void *arg, int t, int nparts) {
 
 /* a marking that ran out of room, undone: every node it touched is
 ** unowned again and no node has marks */
-static void undo(sim *s) {
-  grid *g = &s->g;
-  const marks *mk = &s->marks;
+static void undo(grid *g, const marks *mk) {
   int t;
   size_t e;
   memset(g->owner, 0xff, g->nnodes * sizeof *g->owner);
@@ -224,16 +227,17 @@ static void undo(sim *s) {
 /* step 1, in as many parts as the plan has (one without a plan); 0, or
 ** -1 if some part ran out of room */
 static int mark_all(sim *s) {
-  marks *mk = &s->marks;
-  int split = s->bands.nb > 0, t;
+  sim_work *wk = &s->work;
+  marks *mk = &wk->marks;
+  int split = wk->bands.nb > 0, t;
   mark_job j = {s, split, 1};
-  mk->nparts = split ? s->bands.nb : 1;
+  mk->nparts = split ? wk->bands.nb : 1;
   for (t = 0; t < mk->nparts; t++) mk->used[t] = mk->nev[t] = mk->full[t] = 0;
-  run(s, mark_part, &j);
+  run(wk, mark_part, &j);
   for (t = 0; t < mk->nparts; t++) mk->nev1[t] = mk->nev[t];
   if (split) {
     j.pass = 2;
-    run(s, mark_part, &j);
+    run(wk, mark_part, &j);
   }
   for (t = 0; t < mk->nparts; t++)
     if (mk->full[t]) return -1;
@@ -241,14 +245,15 @@ static int mark_all(sim *s) {
 }
 
 int p2g_mark(sim *s) {
+  sim_work *wk = &s->work;
   grid *g = &s->g;
-  marks *mk = &s->marks;
+  marks *mk = &wk->marks;
   size_t nshared = 0, nslot = 0, most = 0;
   int t;
   for (;;) {
-    if (room(mk, s->bands.nb > 0 ? s->bands.nb : 1)) return -1;
+    if (room(mk, wk->bands.nb > 0 ? wk->bands.nb : 1)) return -1;
     if (!mark_all(s)) break;
-    undo(s);
+    undo(g, mk);
     mk->cap *= 2;
   }
   for (t = 0; t < mk->nparts; t++) {
@@ -258,14 +263,14 @@ int p2g_mark(sim *s) {
   }
   if (nshared) {
     if (grid_slots_reserve(g, g->slotcap, nshared)) return -1;
-    run(s, order_part, s);
+    run(wk, order_part, s);
     for (t = 0; t < mk->nparts; t++) { /* each part's first slot */
       size_t c = mk->slots[t];
       mk->slots[t] = nslot;
       nslot += c;
     }
     if (grid_slots_reserve(g, nslot, nshared)) return -1;
-    run(s, slots_part, s);
+    run(wk, slots_part, s);
   }
   g->nshared = nshared;
   g->nslot = nslot;

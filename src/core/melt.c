@@ -26,13 +26,14 @@ int melt_enable(sim *s) {
 
 static void melt_part(void *arg, int t, int nparts) {
   sim *s = arg;
+  sim_work *wk = &s->work;
   particles *ps = &s->ps;
   const double *T = particles_comp(ps, s->ftemp, 0);
   const double *qf = particles_comp(ps, s->heat->ffric, 0);
   const double *qc = s->heat->conduct ? s->heat->hcond : NULL;
   double *q = particles_comp(ps, s->heat->fq, 0);
   double *seen = particles_comp(ps, s->fmelt, 0);
-  double *red = s->red;
+  double *red = wk->red;
   size_t n = ps->n, c, c0, c1, i, i0, i1;
   par_chunks(n, t, nparts, &c0, &c1);
   for (c = c0; c < c1; c++) {
@@ -58,8 +59,9 @@ static void melt_part(void *arg, int t, int nparts) {
 }
 
 void melt(sim *s) {
-  const double *red = s->red;
+  sim_work *wk = &s->work;
+  const double *red = wk->red;
   size_t c, nc = par_nchunks(s->ps.n);
-  par_run(s->par, melt_part, s);
+  par_run(wk->par, melt_part, s);
   for (c = 0; c < nc; c++) s->e.latent += red[c]; /* chunk order */
 }

@@ -30,19 +30,21 @@ enum { P2G_ALL, P2G_MASS, P2G_FORCE };
 STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
                              const int apic, const int split, const int what,
                              size_t i0, size_t i1, int blk, int pass) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   grid *g = &s->g;
   const particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double lp = s->lp;
+  const double lp = cfg->lp;
   const int rowlen = stencil_rowlen(kind);
   double grav[DIM];
   /* distinct arrays: restrict lets the compiler keep loads ahead of
   ** stores to the other arrays */
   double *restrict gm = g->m;
   double *restrict gp[DIM], *restrict gf[DIM];
-  const int byvol = s->normals != NORMALS_MASS;
+  const int byvol = cfg->normals != NORMALS_MASS;
   double *const *sgrad = byvol ? g->sv : g->sg;
-  const int plane = what != P2G_FORCE && shared && s->normals == NORMALS_PLANE;
+  const int plane = what != P2G_FORCE && shared && cfg->normals == NORMALS_PLANE;
   const int mass = what != P2G_FORCE, force = what != P2G_MASS;
   const double *C[NTENS] = {NULL};
   double r[DIM][STENCIL_MAX];
@@ -52,7 +54,7 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   size_t i;
   int a, b;
   for (a = 0; a < DIM; a++) {
-    grav[a] = s->gravity[a];
+    grav[a] = cfg->gravity[a];
     gp[a] = g->p[a];
     gf[a] = g->f[a];
   }
@@ -73,7 +75,7 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
       for (b = 0; b < DIM; b++) sv[a][b] = V * ps->s[vec_sym(a, b)][i];
     wg = byvol ? V : mp; /* the normals' weight */
     if (split &&
-        !bands_rows(&s->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
+        !bands_rows(&wk->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
       continue;
     if ((apic && mass) || plane) stencil_eval_r(&geo, kind, x, lp, &st, r);
     else stencil_eval(&geo, kind, x, lp, &st);
@@ -127,7 +129,8 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
 STENCIL_INLINE void p2g_what(sim *s, const int kind, const int split,
                              const int what, size_t i0, size_t i1, int blk,
                              int pass) {
-  int shared = s->g.nshared > 0, apic = s->transfer == TRANSFER_APIC;
+  const sim_cfg *cfg = &s->cfg;
+  int shared = s->g.nshared > 0, apic = cfg->transfer == TRANSFER_APIC;
   if (shared) {
     if (apic) p2g_kind(s, kind, 1, 1, split, what, i0, i1, blk, pass);
     else p2g_kind(s, kind, 1, 0, split, what, i0, i1, blk, pass);
@@ -139,7 +142,8 @@ STENCIL_INLINE void p2g_what(sim *s, const int kind, const int split,
 
 STENCIL_INLINE void p2g_split(sim *s, const int kind, const int split,
                               size_t i0, size_t i1, int blk, int pass) {
-  switch (s->p2g_what) {
+  sim_work *wk = &s->work;
+  switch (wk->p2g_what) {
   case P2G_MASS: p2g_what(s, kind, split, P2G_MASS, i0, i1, blk, pass); break;
   case P2G_FORCE: p2g_what(s, kind, split, P2G_FORCE, i0, i1, blk, pass); break;
   default: p2g_what(s, kind, split, P2G_ALL, i0, i1, blk, pass);
@@ -148,10 +152,11 @@ STENCIL_INLINE void p2g_split(sim *s, const int kind, const int split,
 
 static void p2g_range(sim *s, int split, size_t i0, size_t i1, int blk,
                       int pass) {
+  const sim_cfg *cfg = &s->cfg;
 #define P2G(K)                                                         \
   if (split) p2g_split(s, K, 1, i0, i1, blk, pass);                    \
   else p2g_split(s, K, 0, i0, i1, blk, pass);
-  switch (s->shape) {
+  switch (cfg->shape) {
   case SHAPE_GIMP: P2G(SHAPE_GIMP); break;
   case SHAPE_BSPLINE2: P2G(SHAPE_BSPLINE2); break;
   default: P2G(SHAPE_LINEAR);
@@ -167,16 +172,19 @@ static void p2g_span(void *arg, size_t i0, size_t i1, int t, int pass) {
 ** the marking, the scatter and the scatters of reach and g2p (the
 ** particles do not move before g2p's last pass) */
 void p2g_plan(sim *s) {
-  bands_plan(&s->bands, s->par, &s->g, s->shape, s->ps.x[BANDS_DIM], s->ps.n);
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
+  bands_plan(&wk->bands, wk->par, &s->g, cfg->shape, s->ps.x[BANDS_DIM], s->ps.n);
 }
 
 static void p2g_run(sim *s, int what) {
-  s->p2g_what = what;
-  if (s->bands.nb) bands_run(&s->bands, s->par, p2g_span, s);
+  sim_work *wk = &s->work;
+  wk->p2g_what = what;
+  if (wk->bands.nb) bands_run(&wk->bands, wk->par, p2g_span, s);
   else
     p2g_range(s, 0, 0, s->ps.n, 0, 1);
 }
 
-void p2g(sim *s) { p2g_run(s, s->update == UPDATE_USAVG ? P2G_MASS : P2G_ALL); }
+void p2g(sim *s) { p2g_run(s, s->cfg.update == UPDATE_USAVG ? P2G_MASS : P2G_ALL); }
 
 void p2g_force(sim *s) { p2g_run(s, P2G_FORCE); }

@@ -22,7 +22,7 @@ static void effect(FILE *f, const char *name, int on, const char *how) {
 }
 
 void prof_effects(FILE *f, const sim *s) {
-  int k, plastic = 0, visc = 0, alpha = 0, friction = s->mu_default > 0;
+  int k, plastic = 0, visc = 0, alpha = 0, friction = s->cfg.mu_default > 0;
   int walls = 0, wallmu = 0, periodic = 0, grav = 0, d;
   char buf[160];
   for (k = 0; k < s->nmat; k++) {
@@ -36,13 +36,13 @@ void prof_effects(FILE *f, const sim *s) {
     wallmu |= s->sides[k].kind == SIDE_WALL && s->sides[k].mu > 0;
     periodic |= s->sides[k].kind == SIDE_PERIODIC;
   }
-  for (d = 0; d < DIM; d++) grav |= s->gravity[d] != 0;
+  for (d = 0; d < DIM; d++) grav |= s->cfg.gravity[d] != 0;
   fprintf(f, "effects:\n");
   snprintf(buf, sizeof buf, "%d fields, %zu shared nodes in the last step",
            s->nfield, s->g.nshared);
   effect(f, "multi-field contact", s->nfield > 1, buf);
   effect(f, "contact friction", s->nfield > 1 && friction, NULL);
-  effect(f, "separation check", s->nfield > 1 && s->gap_check, "reach");
+  effect(f, "separation check", s->nfield > 1 && s->cfg.gap_check, "reach");
   snprintf(buf, sizeof buf, "%zu interface slots cut so far", s->ncut_total);
   effect(f, "bonds", s->fbond >= 0, buf);
   effect(f, "plasticity", plastic, NULL);
@@ -71,24 +71,24 @@ void prof_effects(FILE *f, const sim *s) {
            wallmu ? ", with friction" : "");
   effect(f, "walls", walls > 0, buf);
   effect(f, "periodic wrap", periodic, NULL);
-  effect(f, "APIC", s->transfer == TRANSFER_APIC, NULL);
+  effect(f, "APIC", s->cfg.transfer == TRANSFER_APIC, NULL);
   effect(f, "gravity", grav, NULL);
   fprintf(f, "  %-22s %s, %s, %d particles per cell, flip %g\n", "scheme",
-          s->update == UPDATE_MUSL    ? "MUSL"
-          : s->update == UPDATE_USAVG ? "USAVG"
+          s->cfg.update == UPDATE_MUSL    ? "MUSL"
+          : s->cfg.update == UPDATE_USAVG ? "USAVG"
                                       : "USL",
-          shape_names[s->shape],
-          s->ppc, s->flip);
+          shape_names[s->cfg.shape],
+          s->cfg.ppc, s->cfg.flip);
   fprintf(f, "  %-22s %d (results do not depend on it)", "threads",
-          par_threads(s->par));
-  if (s->bands.plans && par_threads(s->par) > 1)
+          par_threads(s->work.par));
+  if (s->work.bands.plans && par_threads(s->work.par) > 1)
     fprintf(f, "; scatter in parallel passes in %ld of %ld steps",
-            s->bands.split, s->bands.plans);
+            s->work.bands.split, s->work.bands.plans);
   fprintf(f, "\n");
 }
 
 void prof_report(FILE *f, const sim *s) {
-  const sim_prof *p = s->prof;
+  const sim_prof *p = s->work.prof;
   double total = 0, cpu = 0, crit = 0;
   int k;
   if (!p) return;

@@ -1,7 +1,7 @@
 /*
 ** prof.h - wall time per phase of the step, for `mvmpm run --profile`.
 ** sim_step and run.c mark the end of each phase; the time since the
-** last mark goes to that phase.  With profiling off (s->prof NULL) a
+** last mark goes to that phase.  With profiling off (s->work.prof NULL) a
 ** mark is one test; with it on, one clock_gettime per phase per step.
 */
 #ifndef mvmpm_prof_h
@@ -45,7 +45,7 @@ extern const char *const prof_names[PROF_N];
 struct sim;
 /* the effects the engine derived from the scene, one per line */
 void prof_effects(FILE *f, const struct sim *s);
-/* seconds and shares per phase (nothing without s->prof) */
+/* seconds and shares per phase (nothing without s->work.prof) */
 void prof_report(FILE *f, const struct sim *s);
 
 static inline double prof_clock(void) {

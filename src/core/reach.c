@@ -17,10 +17,11 @@
 ** per column of the wall plane): every column whose node the particle's
 ** stencil reaches along the plane's axes */
 static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
+  const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   const particles *ps = &s->ps;
-  const double l = s->lp * g->h;
-  const int nw = shape_width(s->shape);
+  const double l = cfg->lp * g->h;
+  const int nw = shape_width(cfg->shape);
   int k;
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
@@ -37,8 +38,8 @@ static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
       i0[e] = 0;
       if (e == d) continue;
       xi = (ps->x[e][i] - g->lo[e]) * g->inv_h + (g->periodic[e] ? 0 : g->pad);
-      i0[e] = s->shape == SHAPE_LINEAR ? (int)floor(xi)
-              : s->shape == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
+      i0[e] = cfg->shape == SHAPE_LINEAR ? (int)floor(xi)
+              : cfg->shape == SHAPE_GIMP ? (int)floor(xi + 0.5) - 1
                                        : (int)floor(xi - 0.5);
       cnt *= nw;
     }
@@ -63,15 +64,17 @@ static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
 /* the reach of particle i into the slots of its shared stencil nodes;
 ** with a plan (blk >= 0), only into the node rows this pass writes */
 static void shared(sim *s, size_t i, int blk, int pass) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   const grid *g = &s->g;
   const particles *ps = &s->ps;
-  const bands *b = &s->bands;
-  const double l = s->lp * g->h;
+  const bands *b = &wk->bands;
+  const double l = cfg->lp * g->h;
   int32_t node[STENCIL_MAX];
   double x[DIM];
   int nn, d, k;
   for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-  nn = stencil_nodes(g, s->shape, x, node);
+  nn = stencil_nodes(g, cfg->shape, x, node);
   for (k = 0; k < nn; k++) {
     int32_t n = node[k], sl;
     double e = 0, nrm1 = 0;
@@ -103,21 +106,24 @@ static void shared(sim *s, size_t i, int blk, int pass) {
 ** slot */
 static void shared_span(void *arg, size_t i0, size_t i1, int t, int pass) {
   sim *s = arg;
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   stencil_geo geo;
   unsigned char mine[SHAPE_MAXW];
   size_t i;
   stencil_geo_init(&geo, &s->g);
   for (i = i0; i < i1; i++)
-    if (bands_rows(&s->bands, &geo, s->shape, s->ps.x[BANDS_DIM][i], t, pass, mine))
+    if (bands_rows(&wk->bands, &geo, cfg->shape, s->ps.x[BANDS_DIM][i], t, pass, mine))
       shared(s, i, t, pass);
 }
 
 /* The walls, part t of the particles: part 0 into the sides' own
-** arrays, the others each into a copy of its own (s->wext), merged after:
+** arrays, the others each into a copy of its own (s->work.wext), merged after:
 ** a maximum does not depend on the order it is taken in */
 static void walls_part(void *arg, int t, int nparts) {
   sim *s = arg;
-  double *ext[NSIDES], *w = t > 0 ? s->wext + (size_t)(t - 1) * s->wextn : NULL;
+  sim_work *wk = &s->work;
+  double *ext[NSIDES], *w = t > 0 ? wk->wext + (size_t)(t - 1) * wk->wextn : NULL;
   size_t i, i0, i1, j;
   int k;
   for (k = 0; k < NSIDES; k++) {
@@ -135,9 +141,10 @@ static void walls_part(void *arg, int t, int nparts) {
 }
 
 static void walls_merge(sim *s) {
-  const double *w = s->wext;
+  sim_work *wk = &s->work;
+  const double *w = wk->wext;
   int t, k;
-  for (t = 1; t < par_threads(s->par); t++)
+  for (t = 1; t < par_threads(wk->par); t++)
     for (k = 0; k < NSIDES; k++) {
       side *sd = &s->sides[k];
       size_t j;
@@ -149,17 +156,18 @@ static void walls_merge(sim *s) {
 }
 
 void reach(sim *s) {
+  sim_work *wk = &s->work;
   const particles *ps = &s->ps;
-  const bands *b = &s->bands;
+  const bands *b = &wk->bands;
   int k, anywall = 0;
   size_t i;
   for (k = 0; k < NSIDES; k++) anywall |= s->sides[k].kind == SIDE_WALL;
   if (anywall) {
-    par_run(s->par, walls_part, s);
+    par_run(wk->par, walls_part, s);
     walls_merge(s);
   }
   if (!s->g.nshared) return;
-  if (b->nb) bands_run(b, s->par, shared_span, s);
+  if (b->nb) bands_run(b, wk->par, shared_span, s);
   else
     for (i = 0; i < ps->n; i++) shared(s, i, -1, 1);
 }

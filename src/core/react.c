@@ -93,12 +93,14 @@ _Static_assert(sizeof(react_sums) <= SIM_RED_BYTES, "react_sums fit");
 
 static void react_part(void *arg, int t, int nparts) {
   sim *s = arg;
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   particles *ps = &s->ps;
   const double *T = particles_comp(ps, s->ftemp, 0);
   const double *q = particles_comp(ps, s->heat->fq, 0);
   const double *Tg = s->heat->conduct ? s->heat->tgrid : NULL;
   double *lam = particles_comp(ps, s->freact, 0);
-  react_sums *red = s->red;
+  react_sums *red = wk->red;
   size_t n = ps->n, c, c0, c1, i, i0, i1;
   par_chunks(n, t, nparts, &c0, &c1);
   for (c = c0; c < c1; c++) {
@@ -121,8 +123,8 @@ static void react_part(void *arg, int t, int nparts) {
       ** rate on the adiabatic time scale (docs/algorithm.md) */
       if (s->bodies[ps->body[i]].hold) Ti = T[i];
       else Ti = (Tg ? Tg[i] : T[i]) + q[i] / (ps->m[i] * m->cv);
-      dl = react_advance(&m->rx, m->cv, s->react_tol, s->dt, &Ti, &lam[i],
-                         s->react_ign, &tig, &ns);
+      dl = react_advance(&m->rx, m->cv, cfg->react_tol, s->dt, &Ti, &lam[i],
+                         cfg->react_ign, &tig, &ns);
       qi = ps->m[i] * m->rx.Q * dl;
       heat_add(s, i, qi); /* T reaches Ti in heat_update */
       z.heat += qi;
@@ -134,11 +136,12 @@ static void react_part(void *arg, int t, int nparts) {
 }
 
 void react(sim *s) {
-  const react_sums *red = s->red;
+  sim_work *wk = &s->work;
+  const react_sums *red = wk->red;
   size_t c, nc = par_nchunks(s->ps.n);
   double tign = INFINITY;
   int nsub = 0;
-  par_run(s->par, react_part, s);
+  par_run(wk->par, react_part, s);
   for (c = 0; c < nc; c++) { /* chunk order: any thread count */
     s->e.chemical += red[c].heat;
     s->e.heat_source += red[c].heat;

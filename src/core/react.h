@@ -61,7 +61,7 @@ int react_enable(sim *s);
 
 /* react(s) (sim.h) is the phase over s->dt, after every other heat
 ** source; the chemical energy released goes to s->e.chemical, the first
-** time any particle's lambda passes s->react_ign to s->t_ignition */
+** time any particle's lambda passes s->cfg.react_ign to s->t_ignition */
 
 /* mass-weighted mean reacted fraction of the reacting particles (0 when
 ** none react) */

@@ -19,33 +19,33 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   int k, d;
   size_t most = 0;
   memset(s, 0, sizeof *s);
-  s->shape = shape;
-  s->update = UPDATE_MUSL;
-  s->flip = 1.0;
-  s->xpic = 2;
-  s->cfl = 0.25;
+  s->cfg.shape = shape;
+  s->cfg.update = UPDATE_MUSL;
+  s->cfg.flip = 1.0;
+  s->cfg.xpic = 2;
+  s->cfg.cfl = 0.25;
   s->t_end = 1.0;
-  s->gap_check = 1;
-  s->normal_window = 0;
-  s->bond_default = INFINITY;
+  s->cfg.gap_check = 1;
+  s->cfg.normal_window = 0;
+  s->cfg.bond_default = INFINITY;
   s->faff = -1;
   s->t_stop = INFINITY;
   s->fbond = -1;
   s->frel = -1;
-  s->mcut_rel = 1e-9;
-  s->sort_every = 20;
-  s->ppc = ppc;
-  s->lp = 0.5 / ppc;
+  s->cfg.mcut_rel = 1e-9;
+  s->cfg.sort_every = 20;
+  s->cfg.ppc = ppc;
+  s->cfg.lp = 0.5 / ppc;
   s->ftemp = -1;
   s->freact = -1;
   s->fmelt = -1;
-  s->react_tol = REACT_TOL;
-  s->react_ign = 0.5;
+  s->cfg.react_tol = REACT_TOL;
+  s->cfg.react_ign = 0.5;
   s->t_ignition = INFINITY;
-  s->threads = 1;
+  s->cfg.threads = 1;
   particles_init(&s->ps);
   if (grid_init(&s->g, lo, hi, h, periodic, shape_pad(shape)) ||
-      bands_init(&s->bands, s->g.n[BANDS_DIM])) {
+      bands_init(&s->work.bands, s->g.n[BANDS_DIM])) {
     snprintf(s->err, sizeof s->err, "out of memory for the grid");
     return -1;
   }
@@ -60,8 +60,8 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
     s->sides[k].hm = calloc((size_t)(s->g.pad + 2) * s->sides[k].next, sizeof(double));
     if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm) return -1;
   }
-  s->wpatch = malloc((4 * most + 1) * sizeof *s->wpatch);
-  if (!s->wpatch) return -1;
+  s->work.wpatch = malloc((4 * most + 1) * sizeof *s->work.wpatch);
+  if (!s->work.wpatch) return -1;
   return 0;
 }
 
@@ -80,17 +80,17 @@ void sim_free(sim *s) {
   free(s->fdriven);
   free(s->laws);
   free(s->flaw);
-  par_free(s->par);
-  bands_free(&s->bands);
-  marks_free(&s->marks);
-  free(s->red);
-  free(s->wext);
-  free(s->wpatch);
-  free(s->crec);
-  free(s->cbody);
-  free(s->bfit);
-  free(s->bffield);
-  free(s->prof);
+  par_free(s->work.par);
+  bands_free(&s->work.bands);
+  marks_free(&s->work.marks);
+  free(s->work.red);
+  free(s->work.wext);
+  free(s->work.wpatch);
+  free(s->work.crec);
+  free(s->work.cbody);
+  free(s->work.bfit);
+  free(s->work.bffield);
+  free(s->work.prof);
   heat_free(s);
   memset(s, 0, sizeof *s);
 }
@@ -98,44 +98,46 @@ void sim_free(sim *s) {
 void sim_set_threads(sim *s, int n) {
   if (n < 1) n = 1;
   if (n > PAR_MAX) n = PAR_MAX;
-  if (n == s->threads && s->par) return;
-  par_free(s->par);
-  s->par = NULL;
-  free(s->wext); /* sized by the thread count */
-  s->wext = NULL;
-  s->threads = n;
+  if (n == s->cfg.threads && s->work.par) return;
+  par_free(s->work.par);
+  s->work.par = NULL;
+  free(s->work.wext); /* sized by the thread count */
+  s->work.wext = NULL;
+  s->cfg.threads = n;
 }
 
 /* the pool, and room for the partial sums of every chunk of particles:
 ** made at the first step and grown (doubling) only if particles were
 ** added since, so steps do not allocate */
 int sim_prepare(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   size_t need = par_nchunks(s->ps.n) * SIM_RED_BYTES;
-  if (!s->par && !(s->par = par_new(s->threads))) {
-    snprintf(s->err, sizeof s->err, "cannot start %d threads", s->threads);
+  if (!wk->par && !(wk->par = par_new(cfg->threads))) {
+    snprintf(s->err, sizeof s->err, "cannot start %d threads", cfg->threads);
     return -1;
   }
-  if (!s->wext && par_threads(s->par) > 1) { /* reach.c: walls */
+  if (!wk->wext && par_threads(wk->par) > 1) { /* reach.c: walls */
     int k;
-    s->wextn = 0;
-    for (k = 0; k < NSIDES; k++) s->wextn += s->sides[k].next;
-    s->wext = malloc((size_t)(par_threads(s->par) - 1) * s->wextn *
-                     sizeof *s->wext);
-    if (!s->wext) {
+    wk->wextn = 0;
+    for (k = 0; k < NSIDES; k++) wk->wextn += s->sides[k].next;
+    wk->wext = malloc((size_t)(par_threads(wk->par) - 1) * wk->wextn *
+                     sizeof *wk->wext);
+    if (!wk->wext) {
       snprintf(s->err, sizeof s->err, "out of memory for partial sums");
       return -1;
     }
   }
-  if (need > s->redcap) {
-    size_t cap = s->redcap ? 2 * s->redcap : SIM_RED_BYTES * 64;
+  if (need > wk->redcap) {
+    size_t cap = wk->redcap ? 2 * wk->redcap : SIM_RED_BYTES * 64;
     void *r;
     while (cap < need) cap *= 2;
-    if (!(r = realloc(s->red, cap))) {
+    if (!(r = realloc(wk->red, cap))) {
       snprintf(s->err, sizeof s->err, "out of memory for partial sums");
       return -1;
     }
-    s->red = r;
-    s->redcap = cap;
+    wk->red = r;
+    wk->redcap = cap;
   }
   return 0;
 }
@@ -201,36 +203,38 @@ const char *sim_advice(const sim *s) {
   int k, walls = 0;
   for (k = 0; k < NSIDES; k++)
     if (s->sides[k].kind == SIDE_WALL && !s->g.periodic[k / 2]) walls = 1;
-  if (s->transfer != TRANSFER_FLIP || s->flip < 1 || !(walls || s->nfield > 1))
+  if (s->cfg.transfer != TRANSFER_FLIP || s->cfg.flip < 1 || !(walls || s->nfield > 1))
     return NULL;
   /* the 3-D sphere's bounce (docs/accuracy.md): linear hats under MUSL
   ** lose 2.2 % at 8 cells, 0.7 % at 16, then gain 1.6 % at 32; GIMP
-  ** under USAVG, the 2-D remedy, does no better up to 16 cells and
-  ** costs 1.6-2.9 times as much, so the 2-D advice is not given */
-  if (DIM == 3 && s->shape == SHAPE_LINEAR)
+  ** under USAVG at cfl 0.25 does no better, but with the longer step
+  ** an impact takes fewer steps, at each of which the walls' impact loss
+  ** is taken: 1.6 % at 8 cells, 0.8 % at 12, within 0.12 % at 16, 24 */
+  if (DIM == 3 && s->cfg.shape == SHAPE_LINEAR)
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies at fine grids "
            "(the 3-D sphere's bounce under MUSL: -2.2 %, -0.7 %, +1.6 % after "
-           "three impacts at 8, 16, 32 cells per diameter; GIMP does no "
-           "better up to 16): check the energy budget (docs/accuracy.md)";
+           "three impacts at 8, 16, 32 cells per diameter); for 3-D impacts "
+           "use shape = \"gimp\", update = \"usavg\", cfl = 0.4 (-1.6 %, "
+           "-0.8 %, +0.06 %, -0.12 % at 8, 12, 16, 24) (docs/accuracy.md)";
   /* measured on the frictionless bouncing disc (docs/accuracy.md): the
   ** energy change after three impacts at 8, 16, 32, 48 cells across it.
   ** Linear hats gain per cell crossed under any update; GIMP under MUSL
   ** too, less; GIMP under USAVG and B-splines stay within about 1 % */
-  if (s->shape == SHAPE_LINEAR && s->update == UPDATE_USAVG)
+  if (s->cfg.shape == SHAPE_LINEAR && s->cfg.update == UPDATE_USAVG)
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies as the grid is "
            "refined (-5 %, -1.2 %, +1.4 %, +3.3 % after three bounces at 8, "
            "16, 32, 48 cells per diameter); for impacts use shape = "
            "\"gimp\", update = \"usavg\" (docs/accuracy.md, the bounce's "
            "convergence)";
-  if (s->shape == SHAPE_LINEAR)
+  if (s->cfg.shape == SHAPE_LINEAR)
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies, more as the grid "
            "is refined (under MUSL +25 % after three bounces at 32 cells per "
            "diameter); for impacts use shape = \"gimp\", update = \"usavg\" "
            "(docs/accuracy.md, the bounce's convergence)";
-  if (s->shape == SHAPE_GIMP && s->update == UPDATE_MUSL)
+  if (s->cfg.shape == SHAPE_GIMP && s->cfg.update == UPDATE_MUSL)
     return "GIMP with pure FLIP under MUSL gains energy after impacts on "
            "walls or between bodies as the grid is refined (+0.1 %, +2.9 %, "
            "+4.5 % after three bounces at 16, 32, 48 cells per diameter); "
@@ -246,18 +250,19 @@ const char *sim_advice(const sim *s) {
 ** studies/grain_budget.lua) */
 const char *sim_budget_advice(const sim *s) {
   const sim_energy *e = &s->e;
-  double num = e->transfer + e->impact, put = e->initial + e->boundary;
+  double num = e->transfer + e->impact + e->bonding;
+  double put = e->initial + e->boundary;
   if (!(e->friction > 0) || !(put > 0) || num < 0.02 * put ||
       num < 0.5 * e->friction)
     return NULL;
-  return "the numerical losses (sim:energy().transfer + impact) are more "
+  return "the numerical losses (sim:energy().numerical) are more "
          "than half the friction work: friction work differs between "
          "transfer schemes and resolutions by as much (docs/verification.md, "
          "energy budget with friction)";
 }
 
 int sim_enable_apic(sim *s) {
-  s->transfer = TRANSFER_APIC;
+  s->cfg.transfer = TRANSFER_APIC;
   if (s->faff < 0) {
     int c;
     /* in snapshots too: the affine field is half the particle's velocity
@@ -278,10 +283,10 @@ int sim_enable_bonds(sim *s) {
   if (s->fbond >= 0 && s->frel < 0)
     s->frel = particles_add_field(&s->ps, "release", DIM + 1, PF_DOUBLE, "L",
                                   PF_RESTART);
-  if (s->frel >= 0 && s->bond_fit && !s->bfit) { /* only for bond_traction = "fit" */
-    s->bfit = malloc(BF_N * s->g.nnodes * sizeof *s->bfit);
-    s->bffield = malloc(s->g.nnodes * sizeof *s->bffield);
-    if (!s->bfit || !s->bffield) return -1;
+  if (s->frel >= 0 && s->cfg.bond_fit && !s->work.bfit) { /* only for bond_traction = "fit" */
+    s->work.bfit = malloc(BF_N * s->g.nnodes * sizeof *s->work.bfit);
+    s->work.bffield = malloc(s->g.nnodes * sizeof *s->work.bffield);
+    if (!s->work.bfit || !s->work.bffield) return -1;
   }
   return s->frel < 0 ? -1 : s->fbond;
 }
@@ -299,23 +304,25 @@ long sim_add_particle(sim *s, int32_t b, const double x[DIM],
   }
   ps->body[i] = b;
   ps->vol0[i] = vol;
-  ps->lp[i] = s->lp;
+  ps->lp[i] = s->cfg.lp;
   m = &s->mats[s->bodies[b].material];
   ps->m[i] = m->rho * vol;
   return (long)i;
 }
 
 double sim_stable_dt(const sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   double c = 0;
   int k;
   for (k = 0; k < s->nmat; k++)
     if (s->mats[k].c > c) c = s->mats[k].c;
   /* the wave speed grows as the material is stretched: c ~ sqrt(J) */
   if (s->e.jmax > 1) c *= sqrt(s->e.jmax);
-  return s->cfl * s->g.h / (c + s->vmax);
+  return cfg->cfl * s->g.h / (c + s->vmax);
 }
 
 void sim_measure(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   const particles *ps = &s->ps;
   size_t i;
   int d;
@@ -327,7 +334,7 @@ void sim_measure(sim *s) {
     for (d = 0; d < DIM; d++) {
       v2 += ps->v[d][i] * ps->v[d][i];
       s->e.mom[d] += ps->m[i] * ps->v[d][i];
-      pe -= ps->m[i] * s->gravity[d] * ps->x[d][i];
+      pe -= ps->m[i] * cfg->gravity[d] * ps->x[d][i];
     }
     if (v2 > v2max) v2max = v2;
     ke += 0.5 * ps->m[i] * v2;
@@ -346,9 +353,10 @@ void sim_measure(sim *s) {
 }
 
 double sim_next_dt(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   double dt;
   if (!s->started) sim_measure(s);
-  dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  dt = cfg->dt_fixed > 0 ? cfg->dt_fixed : sim_stable_dt(s);
   /* land on the end of a run rather than overshoot it; a sliver shorter
   ** than a thousandth of a step is absorbed by the step before */
   if (s->t_stop > s->t && s->t + dt * 1.001 > s->t_stop) dt = s->t_stop - s->t;
@@ -356,10 +364,11 @@ double sim_next_dt(sim *s) {
 }
 
 int sim_wall_hold(const sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   int d;
-  if (s->wall_remap != WALL_REMAP_AUTO) return s->wall_remap == WALL_REMAP_HOLD;
+  if (cfg->wall_remap != WALL_REMAP_AUTO) return cfg->wall_remap == WALL_REMAP_HOLD;
   for (d = 0; d < DIM; d++)
-    if (s->gravity[d] != 0) return 1;
+    if (cfg->gravity[d] != 0) return 1;
   return 0;
 }
 
@@ -370,7 +379,8 @@ double sim_total(const sim *s) {
 double sim_residual(const sim *s) {
   const sim_energy *e = &s->e;
   return e->initial + e->boundary + e->thermal - e->friction - e->plastic -
-         e->viscous - e->settled - e->transfer - e->impact - sim_total(s);
+         e->viscous - e->settled - e->transfer - e->impact - e->bonding -
+         sim_total(s);
 }
 
 double sim_scale(const sim *s) {
@@ -409,7 +419,8 @@ typedef struct cjob { sim *s; double dt; } cjob;
 static void constitutive_part(void *arg, int t, int nparts) {
   const cjob *j = arg;
   sim *s = j->s;
-  mat_sums *red = s->red;
+  sim_work *wk = &s->work;
+  mat_sums *red = wk->red;
   size_t n = s->ps.n, c, c0, c1, i0, i1;
   int k;
   par_chunks(n, t, nparts, &c0, &c1);
@@ -426,11 +437,13 @@ static void constitutive_part(void *arg, int t, int nparts) {
 _Static_assert(sizeof(mat_sums) <= SIM_RED_BYTES, "mat_sums fit SIM_RED_BYTES");
 
 int constitutive(sim *s, double dt) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   mat_sums sum = {0, 0, 1e300, -1e300, 0, 0, 0, 0};
-  const mat_sums *red = s->red;
+  const mat_sums *red = wk->red;
   size_t c, nc = par_nchunks(s->ps.n);
   cjob j = {s, dt};
-  par_run(s->par, constitutive_part, &j);
+  par_run(wk->par, constitutive_part, &j);
   /* in chunk order: the same for any thread count */
   for (c = 0; c < nc; c++) {
     sum.strain += red[c].strain;
@@ -451,7 +464,7 @@ int constitutive(sim *s, double dt) {
     s->e.heat_viscous += sum.viscous;
   }
   /* USAVG's stresses are those of the step's end, as the velocities */
-  s->e.lag = s->update == UPDATE_USAVG ? 0 : -0.5 * dt * sum.power;
+  s->e.lag = cfg->update == UPDATE_USAVG ? 0 : -0.5 * dt * sum.power;
   if (sum.jmin <= sum.jmax) { s->e.jmin = sum.jmin; s->e.jmax = sum.jmax; }
   s->e.nbadj = sum.nbadj;
   if (sum.nbadj) {
@@ -466,6 +479,8 @@ int constitutive(sim *s, double dt) {
 
 /* particles that left the domain are dropped (documented behaviour) */
 static void housekeeping(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   particles *ps = &s->ps;
   if (s->nout) {
     unsigned char *keep = ps->scratch; /* cap bytes are enough */
@@ -480,26 +495,27 @@ static void housekeeping(sim *s) {
   ** and the scatter plan (bands.h) of two bodies side by side gives one
   ** part every row in pass 1 and the other every row in pass 2: the
   ** threads took turns for the first sort_every steps */
-  if (s->sort_every > 0 && (s->step % s->sort_every == 0 || s->step == 1)) {
+  if (cfg->sort_every > 0 && (s->step % cfg->sort_every == 0 || s->step == 1)) {
     size_t ncell = 1;
     int d;
     for (d = 0; d < DIM; d++) ncell *= (size_t)s->g.cells[d];
-    particles_sort(ps, ps->cell, ncell, s->par);
+    particles_sort(ps, ps->cell, ncell, wk->par);
   }
 }
 
 void sim_begin(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
   const particles *ps = &s->ps;
   double mmin = 1e300;
   size_t i;
   for (i = 0; i < ps->n; i++)
     if (ps->m[i] < mmin) mmin = ps->m[i];
-  s->mcut = ps->n ? s->mcut_rel * mmin : 0;
+  s->mcut = ps->n ? cfg->mcut_rel * mmin : 0;
   sim_measure(s);
   s->e.initial = s->e.kinetic + s->e.strain + s->e.potential;
   s->e.potential0 = s->e.potential;
   s->e.jmin = s->e.jmax = 1;
-  s->dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  s->dt = cfg->dt_fixed > 0 ? cfg->dt_fixed : sim_stable_dt(s);
 }
 
 /* the forces walls and driven bodies report are those of this step */
@@ -521,7 +537,9 @@ static void reset_part(void *arg, int t, int nparts) {
 }
 
 int sim_step(sim *s) {
-  int musl = s->update != UPDATE_USL, usavg = s->update == UPDATE_USAVG;
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
+  int musl = cfg->update != UPDATE_USL, usavg = cfg->update == UPDATE_USAVG;
   if (sim_prepare(s)) return -1;
   if (s->heat && !s->heat->ready && heat_start(s)) return -1;
   if (!s->started) {
@@ -532,11 +550,11 @@ int sim_step(sim *s) {
     s->started = 1;
   }
   s->dt = sim_next_dt(s);
-  prof_mark(s->prof, PROF_HOUSE);
-  par_run(s->par, reset_part, &s->g);
+  prof_mark(wk->prof, PROF_HOUSE);
+  par_run(wk->par, reset_part, &s->g);
   grid_reset_slots(&s->g);
   p2g_plan(s);
-  s->g.moments = s->normals == NORMALS_PLANE;
+  s->g.moments = cfg->normals == NORMALS_PLANE;
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
@@ -544,11 +562,11 @@ int sim_step(sim *s) {
   if (s->heat && heat_prepare(s)) return -1;
   p2g(s);
   if (usavg && usf(s)) return -1;
-  prof_mark(s->prof, PROF_P2G);
+  prof_mark(wk->prof, PROF_P2G);
   solve_momentum(s);
-  prof_mark(s->prof, PROF_SOLVE);
+  prof_mark(wk->prof, PROF_SOLVE);
   if (s->g.nshared) contact_normals(s);
-  if (s->gap_check) reach(s);
+  if (cfg->gap_check) reach(s);
   forces_clear(s);
   if (s->g.nshared && s->fbond >= 0) bond_gather(s);
   if (s->g.nshared) contact_apply(s);
@@ -556,19 +574,19 @@ int sim_step(sim *s) {
     bond_scatter(s);
     s->ncut_total += s->ncut;
   }
-  prof_mark(s->prof, PROF_CONTACT);
+  prof_mark(wk->prof, PROF_CONTACT);
   boundary_apply(s);
-  prof_mark(s->prof, PROF_SIDES);
+  prof_mark(wk->prof, PROF_SIDES);
   if (s->heat) {
     if (heat_grid(s)) return -1;
-    prof_mark(s->prof, PROF_HEAT);
+    prof_mark(wk->prof, PROF_HEAT);
   }
   solve_velocity(s);
-  if (s->transfer == TRANSFER_XPIC) xpic(s);
-  prof_mark(s->prof, PROF_SOLVE);
+  if (cfg->transfer == TRANSFER_XPIC) xpic(s);
+  prof_mark(wk->prof, PROF_SOLVE);
   if (!musl && s->heat) heat_finish(s); /* book_finish's velocities (vL) */
   g2p(s);
-  prof_mark(s->prof, PROF_G2P);
+  prof_mark(wk->prof, PROF_G2P);
   if (musl) {
     /* the remap is not constrained again by contact: the velocity
     ** gradient follows what the particles do; the walls only where the
@@ -579,7 +597,7 @@ int sim_step(sim *s) {
     if (s->heat) heat_finish(s); /* ... and its heat, before the move */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);
     g2p_remap(s);
-    prof_mark(s->prof, PROF_REMAP);
+    prof_mark(wk->prof, PROF_REMAP);
   }
   if (!musl) book_finish(s); /* no remap: on vL */
   if (s->temp_on) thermal(s);
@@ -587,15 +605,15 @@ int sim_step(sim *s) {
   /* after every other source of heat of the step */
   if (s->fmelt >= 0) melt(s);
   if (s->react_on) react(s);
-  prof_mark(s->prof, PROF_CONST);
+  prof_mark(wk->prof, PROF_CONST);
   if (s->heat) {
     heat_update(s);
-    prof_mark(s->prof, PROF_HEAT);
+    prof_mark(wk->prof, PROF_HEAT);
   }
   s->t += s->dt;
   s->step++;
   housekeeping(s);
-  if (s->prof) s->prof->steps++;
-  prof_mark(s->prof, PROF_HOUSE);
+  if (wk->prof) wk->prof->steps++;
+  prof_mark(wk->prof, PROF_HOUSE);
   return 0;
 }

@@ -107,6 +107,10 @@ typedef struct sim_energy {
                      ** mean velocity (g2p.c) */
   double impact;     /* what the normal impulses of contact and walls
                      ** dissipate: impacts are inelastic at a node */
+  double bonding;    /* what bonded nodes take: the impulses that give
+                     ** the bonded fields one velocity (inelastic at the
+                     ** node) less the stress work bond_remap adds
+                     ** (contact.c, bond.c) */
   /* heat (heat.h), in scenes with heat only: what the sources put into
   ** the particles (friction, beta x plastic, viscous, heat_add's), what
   ** wall friction gave the walls, the cold work (1 - beta) x plastic,
@@ -125,85 +129,53 @@ typedef struct sim_energy {
   size_t nbadj;
 } sim_energy;
 
-typedef struct sim {
-  grid g;
-  particles ps;
+/*
+** The settings of a simulation: set (and checked) between steps by
+** sim_init and the scene's setters, read by the phases of a step, which
+** never write them.  A checkpoint keeps the ones a restart needs.
+*/
+typedef struct sim_cfg {
   int shape;         /* enum shape_kind */
   int update;        /* enum update_kind */
-  int p2g_what;      /* p2g.c: what its scatter now adds */
   double flip;       /* FLIP fraction of the velocity update, 0 = PIC */
   int transfer;      /* enum transfer_kind */
   int xpic;          /* XPIC: its order m, 2 or 3 (xpic.c) */
-  int faff;          /* APIC: particle field "affine" (C, row major) */
   double cfl;        /* Courant number for the automatic step */
   double dt_fixed;   /* > 0: fixed step */
-  double dt, t, t_end;
-  double t_stop;     /* a step ends here at the latest (run_until's end) */
-  long step;
   double gravity[DIM];
-  side sides[NSIDES];
-  material *mats;
-  int nmat, matcap;
-  body *bodies;
-  int nbody, bodycap;
-  int32_t *bmat;     /* per body: material index, -1 for driven */
-  int nfield;
-  int ndriven;       /* driven bodies (set with their drive) */
-  int32_t *fdriven;  /* per field: driving body or -1 */
   double mu_default; /* default contact friction between fields */
-  pairlaw *laws;     /* overrides per field pair, sorted (a < b) */
-  int nlaw, lawcap;
-  unsigned char *flaw; /* per field: 1 if some override names it */
   double bond_default; /* bond cap where no law says otherwise (INFINITY) */
-  int fbond;         /* particle field "bond" (strength), -1: no bonds */
-  int frel;          /* particle field "release": 1 once the particle's bond
-                        was cut, then its position then (bond.c) */
   int release;       /* enum release_kind: contact across a released bond */
   int bond_fit;      /* bond traction from the sides' fitted profiles */
   double bond_length; /* ... averaged over this length along the interface */
-  /* per node, the bond traction's sums over the particles near, not at,
-  ** an interface (bond.c: BF_* arrays of nnodes each), and the field they
-  ** belong to */
-  double *bfit;
-  int32_t *bffield;
-  size_t ncut;       /* interface slots debonded in the last step */
-  size_t ncut_total; /* ... since the start */
-  double bond_area;  /* bonded interface area in the last step (length in
-                        2-D), each interface counted once */
   int gap_check;     /* contact only once material surfaces meet */
   int gap_step;      /* ... judged at the step's end (contact.c closing) */
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
   int wall_rule;     /* enum wall_rule: node by node or per contact patch */
   int normals;       /* enum normals_kind: how contact normals are taken */
   int normal_window; /* ... from the shared nodes within this many cells */
-  double mcut;       /* nodal masses below this are empty */
+  double mcut_rel;   /* mcut as a fraction of the lightest particle */
   int sort_every;    /* steps between sorts by cell */
-  size_t nremoved;   /* particles that left the domain */
-  double lp;         /* particle half size in cells (1 / (2 ppc)) */
   int ppc;
-  sim_energy e;
-  int ftemp;         /* particle field "temperature", -1 if no scene uses it */
-  int temp_on;       /* a uniform temperature is imposed (thermal.c) */
-  struct heat_state *heat; /* heat.h: NULL in a scene without heat */
-  double temp;       /* ... its value at the end of the next step */
-  int freact;        /* particle field "reacted", -1 if nothing reacts */
-  int react_on;      /* some material reacts: the reaction phase runs */
+  double lp;         /* particle half size in cells (1 / (2 ppc)) */
   double react_tol;  /* largest change of Ta / T over a substep (react.h) */
   double react_ign;  /* the reacted fraction that counts as ignition */
-  double t_ignition; /* when a particle first passed it; INFINITY before */
-  int react_nsub;    /* most substeps one particle took, last step */
-  int fmelt;         /* melt.h: friction heat already seen, -1 if no
-                     ** material caps friction heating at T_melt */
-  double vmax;       /* fastest particle of the last step */
-  size_t nout;       /* particles outside the domain after the last move */
-  double mcut_rel;   /* mcut as a fraction of the lightest particle */
-  int started;
   /* threads (par.h): the pool is made at the first step, or the first
   ** after sim_set_threads; results do not depend on the count */
   int threads;
+} sim_cfg;
+
+/*
+** The scratch of a step: the thread pool, the scatter plan and the
+** rooms the threaded phases sum and record into.  Made or grown by
+** sim_prepare (and the phases' own prepare calls), overwritten by every
+** step, never read across steps and never kept by a checkpoint.
+*/
+typedef struct sim_work {
   par *par;
   bands bands;       /* the plan of this step's scatters (bands.h) */
   marks marks;       /* shared-node marking's room (mark.h) */
+  int p2g_what;      /* p2g.c: what its scatter now adds */
   void *red;         /* per-chunk partial sums of the threaded phases */
   size_t redcap;     /* ... its bytes */
   double *wext;      /* reach.c: each thread but the first's copy of the
@@ -217,7 +189,67 @@ typedef struct sim {
   double *crec;
   int32_t *cbody;
   size_t cnodecap;
+  /* per node, the bond traction's sums over the particles near, not at,
+  ** an interface (bond.c: BF_* arrays of nnodes each), and the field they
+  ** belong to */
+  double *bfit;
+  int32_t *bffield;
   struct sim_prof *prof; /* time per phase, when profiling (prof.h) */
+} sim_work;
+
+/*
+** The simulation object: its settings (cfg), the state a step advances
+** (the members between them: grid, particles, time, the registries of
+** materials, bodies, laws and particle fields, energies and counters)
+** and the step's scratch (work).  A phase names at its top which of the
+** three it reads and writes (docs/architecture.md has the table).
+*/
+typedef struct sim {
+  sim_cfg cfg;       /* the settings */
+  /* the state */
+  grid g;
+  particles ps;
+  int faff;          /* APIC: particle field "affine" (C, row major) */
+  double dt, t, t_end;
+  double t_stop;     /* a step ends here at the latest (run_until's end) */
+  long step;
+  side sides[NSIDES];
+  material *mats;
+  int nmat, matcap;
+  body *bodies;
+  int nbody, bodycap;
+  int32_t *bmat;     /* per body: material index, -1 for driven */
+  int nfield;
+  int ndriven;       /* driven bodies (set with their drive) */
+  int32_t *fdriven;  /* per field: driving body or -1 */
+  pairlaw *laws;     /* overrides per field pair, sorted (a < b) */
+  int nlaw, lawcap;
+  unsigned char *flaw; /* per field: 1 if some override names it */
+  int fbond;         /* particle field "bond" (strength), -1: no bonds */
+  int frel;          /* particle field "release": 1 once the particle's bond
+                        was cut, then its position then (bond.c) */
+  size_t ncut;       /* interface slots debonded in the last step */
+  size_t ncut_total; /* ... since the start */
+  double bond_area;  /* bonded interface area in the last step (length in
+                        2-D), each interface counted once */
+  double mcut;       /* nodal masses below this are empty (cfg.mcut_rel
+                        times the lightest particle, sim_begin) */
+  size_t nremoved;   /* particles that left the domain */
+  sim_energy e;
+  int ftemp;         /* particle field "temperature", -1 if no scene uses it */
+  int temp_on;       /* a uniform temperature is imposed (thermal.c) */
+  struct heat_state *heat; /* heat.h: NULL in a scene without heat */
+  double temp;       /* ... its value at the end of the next step */
+  int freact;        /* particle field "reacted", -1 if nothing reacts */
+  int react_on;      /* some material reacts: the reaction phase runs */
+  double t_ignition; /* when a particle first passed it; INFINITY before */
+  int react_nsub;    /* most substeps one particle took, last step */
+  int fmelt;         /* melt.h: friction heat already seen, -1 if no
+                     ** material caps friction heating at T_melt */
+  double vmax;       /* fastest particle of the last step */
+  size_t nout;       /* particles outside the domain after the last move */
+  int started;
+  sim_work work;     /* the step's scratch */
   char err[256];
 } sim;
 

@@ -36,7 +36,7 @@ static void momentum_part(void *arg, int t, int nparts) {
   momentum(i0, i1, s->dt, g->sq, g->sp, g->sf);
 }
 
-void solve_momentum(sim *s) { par_run(s->par, momentum_part, s); }
+void solve_momentum(sim *s) { par_run(s->work.par, momentum_part, s); }
 
 /* q -> vL, f -> dv, for entries [i0, i1) of one field table */
 static void velocity(size_t i0, size_t i1, const double *m, double *const p[DIM],
@@ -67,8 +67,9 @@ static void velocity(size_t i0, size_t i1, const double *m, double *const p[DIM]
 
 static void velocity_part(void *arg, int t, int nparts) {
   sim *s = arg;
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
-  int musl = s->update != UPDATE_USL;
+  int musl = cfg->update != UPDATE_USL;
   size_t i0, i1;
   par_range(g->nnodes, t, nparts, &i0, &i1);
   velocity(i0, i1, g->m, g->p, g->q, g->f, s->mcut, musl);
@@ -76,7 +77,7 @@ static void velocity_part(void *arg, int t, int nparts) {
   velocity(i0, i1, g->sm, g->sp, g->sq, g->sf, s->mcut, musl);
 }
 
-void solve_velocity(sim *s) { par_run(s->par, velocity_part, s); }
+void solve_velocity(sim *s) { par_run(s->work.par, velocity_part, s); }
 
 static void remap(size_t i0, size_t i1, const double *m, double *const p[DIM]) {
   size_t i;
@@ -96,4 +97,4 @@ static void remap_part(void *arg, int t, int nparts) {
   remap(i0, i1, g->sm, g->sp);
 }
 
-void solve_remap(sim *s) { par_run(s->par, remap_part, &s->g); }
+void solve_remap(sim *s) { par_run(s->work.par, remap_part, &s->g); }

@@ -65,8 +65,9 @@ void thermal_prestress(sim *s) {
 /* whole chunks of particles (par.h), the work summed per chunk */
 static void thermal_part(void *arg, int t, int nparts) {
   sim *s = arg;
+  sim_work *wk = &s->work;
   particles *ps = &s->ps;
-  double *T = particles_comp(ps, s->ftemp, 0), *red = s->red;
+  double *T = particles_comp(ps, s->ftemp, 0), *red = wk->red;
   const double Tn = s->temp;
   size_t n = ps->n, c, c0, c1, i, i0, i1;
   par_chunks(n, t, nparts, &c0, &c1);
@@ -86,8 +87,9 @@ static void thermal_part(void *arg, int t, int nparts) {
 
 /* the chunks' work added in chunk order: the same for any thread count */
 void thermal(sim *s) {
-  const double *red = s->red;
+  sim_work *wk = &s->work;
+  const double *red = wk->red;
   size_t c, nc = par_nchunks(s->ps.n);
-  par_run(s->par, thermal_part, s);
+  par_run(wk->par, thermal_part, s);
   for (c = 0; c < nc; c++) s->e.thermal += red[c];
 }

@@ -45,10 +45,11 @@ static void velocity_part(void *arg, int t, int nparts) {
 /* L_p = sum_i v_i (x) grad S_ip, each particle from its own field */
 STENCIL_INLINE void gradient_kind(sim *s, const int kind, const int shared,
                                   size_t i0, size_t i1) {
+  const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double lp = s->lp;
+  const double lp = cfg->lp;
   const double *restrict gq[DIM];
   stencil_geo geo;
   stencil st;
@@ -79,11 +80,12 @@ STENCIL_INLINE void gradient_kind(sim *s, const int kind, const int shared,
 }
 
 static void gradient_range(sim *s, size_t i0, size_t i1) {
+  const sim_cfg *cfg = &s->cfg;
   int shared = s->g.nshared > 0;
 #define GRAD(K)                                                          \
   if (shared) gradient_kind(s, K, 1, i0, i1);                            \
   else gradient_kind(s, K, 0, i0, i1);
-  switch (s->shape) {
+  switch (cfg->shape) {
   case SHAPE_GIMP: GRAD(SHAPE_GIMP) break;
   case SHAPE_BSPLINE2: GRAD(SHAPE_BSPLINE2) break;
   default: GRAD(SHAPE_LINEAR)
@@ -99,12 +101,13 @@ static void gradient_part(void *arg, int t, int nparts) {
 }
 
 int usf(sim *s) {
-  par_run(s->par, velocity_part, &s->g);
+  sim_work *wk = &s->work;
+  par_run(wk->par, velocity_part, &s->g);
   /* where MUSL's remap holds the walls (gravity on), this velocity too,
   ** at the nodes where a wall acted in the last step: otherwise a body
   ** resting on a floor is pumped as boundary.c describes */
   if (sim_wall_hold(s)) boundary_normal_set(s, s->g.q, s->g.sq, 1);
-  par_run(s->par, gradient_part, s);
+  par_run(wk->par, gradient_part, s);
   if (constitutive(s, 0.5 * s->dt)) return -1;
   p2g_force(s);
   return 0;

@@ -37,10 +37,11 @@
 ** v_p + S (vL - v) (g2p.c; the remap sets L afterwards) */
 STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared,
                                const int keep) {
+  const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   particles *ps = &s->ps;
   const body *bd = s->bodies;
-  const double lp = s->lp;
+  const double lp = cfg->lp;
   stencil_geo geo;
   stencil st;
   size_t i;
@@ -76,11 +77,12 @@ STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared,
 }
 
 static void apply(sim *s, int keep) {
+  const sim_cfg *cfg = &s->cfg;
   int shared = s->g.nshared > 0;
 #define APPLY(K)                                                         \
   if (shared) { if (keep) apply_kind(s, K, 1, 1); else apply_kind(s, K, 1, 0); } \
   else { if (keep) apply_kind(s, K, 0, 1); else apply_kind(s, K, 0, 0); }
-  switch (s->shape) {
+  switch (cfg->shape) {
   case SHAPE_GIMP: APPLY(SHAPE_GIMP) break;
   case SHAPE_BSPLINE2: APPLY(SHAPE_BSPLINE2) break;
   default: APPLY(SHAPE_LINEAR)
@@ -119,15 +121,17 @@ static void nodes_part(void *arg, int t, int nparts) {
 
 
 void xpic(sim *s) {
+  const sim_cfg *cfg = &s->cfg;
+  sim_work *wk = &s->work;
   xjob j = {s, 0};
-  par_run(s->par, nodes_part, &j); /* u = v */
+  par_run(wk->par, nodes_part, &j); /* u = v */
   apply(s, 1);
   j.stage = 1;                     /* u1 = v - A v */
-  par_run(s->par, nodes_part, &j);
-  if (s->xpic >= 3) {              /* c = 2 u1 - A u1 */
+  par_run(wk->par, nodes_part, &j);
+  if (cfg->xpic >= 3) {              /* c = 2 u1 - A u1 */
     apply(s, 0);
     j.stage = 2;
-    par_run(s->par, nodes_part, &j);
+    par_run(wk->par, nodes_part, &j);
   }
   /* the correction's normal part off where a wall acted */
   boundary_normal_set(s, s->g.f, s->g.sf, 0);

@@ -40,7 +40,7 @@ static int occ_init(lua_State *L, lsim *ls) {
   size_t n = 1, k;
   int d;
   if (ls->occ) return 0;
-  for (d = 0; d < DIM; d++) n *= (size_t)ls->s.g.cells[d] * ls->s.ppc;
+  for (d = 0; d < DIM; d++) n *= (size_t)ls->s.g.cells[d] * ls->s.cfg.ppc;
   ls->occ = malloc(n * sizeof *ls->occ);
   if (!ls->occ) return luaL_error(L, "body: out of memory for the seeding lattice");
   for (k = 0; k < n; k++) ls->occ[k] = -1;
@@ -136,7 +136,7 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
                        int bodyid, seed *sd, size_t **taken, size_t *ntaken) {
   const grid *g = &ls->s.g;
   lshape *sh = lshape_check(L, shidx);
-  int ppc = ls->s.ppc, N[DIM], i0[DIM], i1[DIM], ix[DIM], iw[DIM], d;
+  int ppc = ls->s.cfg.ppc, N[DIM], i0[DIM], i1[DIM], ix[DIM], iw[DIM], d;
   double hp = g->h / ppc, vol = pow(hp, DIM), x[DIM];
   size_t cap = 0;
   /* along a periodic dimension the shape's lattice range is not clipped
@@ -213,7 +213,7 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
 }
 
 static void seed_points(lua_State *L, lsim *ls, seed *sd) {
-  double hp = ls->s.g.h / ls->s.ppc, vdef = pow(hp, DIM);
+  double hp = ls->s.g.h / ls->s.cfg.ppc, vdef = pow(hp, DIM);
   const char *const names[] = {"x", "y", "z"};
   lua_Integer n = -1, k;
   int d, tv;
@@ -323,8 +323,8 @@ static seedbox *seedbox_new(lua_State *L) {
 static void material_speed(lua_State *L, lsim *ls, int mi, const char *name) {
   const sim *s = &ls->s;
   const material *m = &s->mats[mi];
-  double dt = s->cfl * s->g.h / m->c, steps = s->t_end / dt;
-  if (s->dt_fixed > 0 || steps <= LSIM_MAX_SPAN) return;
+  double dt = s->cfg.cfl * s->g.h / m->c, steps = s->t_end / dt;
+  if (s->cfg.dt_fixed > 0 || steps <= LSIM_MAX_SPAN) return;
   chk_error(L, "body '%s': material '%s' has the wave speed sqrt((K + 4G/3) "
                "/ density) = %g (K = %g, G = %g, density = %g): its step "
                "cfl * cell / speed = %g would take %.3g steps to t_end = %g "

@@ -11,6 +11,7 @@
 #include <string.h>
 #include "diag_contact.h"
 #include "diag_overlap.h"
+#include "diag_wall.h"
 #include "lcheck.h"
 #include "lsim.h"
 #include "lstate.h"
@@ -82,7 +83,7 @@ void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,
   va_list ap;
   int d;
   for (d = 0; d < DIM; d++) speed = hypot(speed, v[d]);
-  steps = span * speed / (s->cfl * s->g.h);
+  steps = span * speed / (s->cfg.cfl * s->g.h);
   /* 1e150: squared, a speed stays finite */
   if (speed <= 1e150 && steps <= LSIM_MAX_SPAN) return;
   va_start(ap, fmt);
@@ -91,7 +92,7 @@ void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,
   snprintf(msg, sizeof msg, "%s: a speed of %g is more than the step can "
            "follow: its CFL step cfl * cell / speed = %g would need %.3g "
            "steps to t_end = %g (at most %.0e)", what, speed,
-           s->cfl * s->g.h / speed, steps, s->t_end, LSIM_MAX_SPAN);
+           s->cfg.cfl * s->g.h / speed, steps, s->t_end, LSIM_MAX_SPAN);
   if (fnidx) chk_fnerror(L, fnidx, "%s", msg);
   luaL_error(L, "%s", msg);
 }
@@ -380,15 +381,15 @@ int lsim_new(lua_State *L) {
     }
     ls->ok = 1;
     s = &ls->s;
-    s->update = chk_option(L, 1, what, "update", UPDATE_MUSL, updates);
-    s->transfer = chk_option(L, 1, what, "transfer", TRANSFER_FLIP, transfers);
+    s->cfg.update = chk_option(L, 1, what, "update", UPDATE_MUSL, updates);
+    s->cfg.transfer = chk_option(L, 1, what, "transfer", TRANSFER_FLIP, transfers);
     {
       double m = chk_num(L, 1, what, "xpic", 2, 2, 3, 0);
       if (m != 2 && m != 3)
         luaL_error(L, "sim: field 'xpic' (the XPIC order) must be 2 or 3 (got %g)", m);
-      s->xpic = (int)m;
+      s->cfg.xpic = (int)m;
     }
-    if (s->transfer == TRANSFER_APIC) {
+    if (s->cfg.transfer == TRANSFER_APIC) {
       /* measured: a spinning disc on linear hats with C = grad v has
       ** det F < 0 within 450 steps, in USL and MUSL alike */
       if (shape == SHAPE_LINEAR)
@@ -398,33 +399,33 @@ int lsim_new(lua_State *L) {
       if (sim_enable_apic(s))
         luaL_error(L, "sim: out of memory for the affine transfer");
     }
-    s->flip = chk_num(L, 1, what, "flip", 1.0, 0, 1, 0);
-    s->cfl = chk_num(L, 1, what, "cfl", 0.25, 0, 1, CHK_OPENLO);
-    s->dt_fixed = chk_num(L, 1, what, "dt", 0, 0, HUGE_VAL, 0);
+    s->cfg.flip = chk_num(L, 1, what, "flip", 1.0, 0, 1, 0);
+    s->cfg.cfl = chk_num(L, 1, what, "cfl", 0.25, 0, 1, CHK_OPENLO);
+    s->cfg.dt_fixed = chk_num(L, 1, what, "dt", 0, 0, HUGE_VAL, 0);
     s->t_end = chk_num(L, 1, what, "t_end", 1.0, 0, HUGE_VAL, 0);
-    chk_vec(L, 1, what, "gravity", s->gravity, DIM, 0);
+    chk_vec(L, 1, what, "gravity", s->cfg.gravity, DIM, 0);
     /* now that the step's terms are known */
     for (k = 0; k < NSIDES; k++)
       lsim_check_speed(L, ls, s->sides[k].v, 0, "sim: sides.%s velocity",
                        lsim_side_names[k]);
-    if (s->dt_fixed > 0 && s->t_end / s->dt_fixed > LSIM_MAX_SPAN)
+    if (s->cfg.dt_fixed > 0 && s->t_end / s->cfg.dt_fixed > LSIM_MAX_SPAN)
       chk_error(L, "sim: field 'dt' = %g would take %.3g steps to t_end = %g "
-                   "(at most %.0e); give 'dt' >= %g", s->dt_fixed,
-                s->t_end / s->dt_fixed, s->t_end, LSIM_MAX_SPAN,
+                   "(at most %.0e); give 'dt' >= %g", s->cfg.dt_fixed,
+                s->t_end / s->cfg.dt_fixed, s->t_end, LSIM_MAX_SPAN,
                 s->t_end / LSIM_MAX_SPAN);
-    s->sort_every = (int)chk_num(L, 1, what, "sort_every", 20, 0, 1e9, CHK_INT);
-    s->mcut_rel = chk_num(L, 1, what, "mass_cutoff", 1e-9, 0, 1, 0);
+    s->cfg.sort_every = (int)chk_num(L, 1, what, "sort_every", 20, 0, 1e9, CHK_INT);
+    s->cfg.mcut_rel = chk_num(L, 1, what, "mass_cutoff", 1e-9, 0, 1, 0);
     sim_set_threads(s, (int)chk_num(L, 1, what, "threads", lsim_env_threads(),
                                     1, PAR_MAX, CHK_INT));
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
-    s->wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
-    s->wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
-    s->normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
-    s->gap_step = chk_option(L, 1, what, "contact_gap", s->gap_step, gapopt);
-    s->release = chk_option(L, 1, what, "bond_release", RELEASE_OPEN, releaseopt);
-    s->bond_fit = chk_option(L, 1, what, "bond_traction", 0, tractionopt);
-    s->bond_length = chk_num(L, 1, what, "bond_length", 0, 0, HUGE_VAL, 0);
-    s->normal_window = (int)chk_num(L, 1, what, "normal_window", s->normal_window,
+    s->cfg.wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
+    s->cfg.wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
+    s->cfg.normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
+    s->cfg.gap_step = chk_option(L, 1, what, "contact_gap", s->cfg.gap_step, gapopt);
+    s->cfg.release = chk_option(L, 1, what, "bond_release", RELEASE_OPEN, releaseopt);
+    s->cfg.bond_fit = chk_option(L, 1, what, "bond_traction", 0, tractionopt);
+    s->cfg.bond_length = chk_num(L, 1, what, "bond_length", 0, 0, HUGE_VAL, 0);
+    s->cfg.normal_window = (int)chk_num(L, 1, what, "normal_window", s->cfg.normal_window,
                                     0, NORMAL_WINDOW_MAX, CHK_INT);
     lua_getfield(L, 1, "units");
     snprintf(ls->units, sizeof ls->units, "%s",
@@ -436,9 +437,9 @@ int lsim_new(lua_State *L) {
       int ci = lua_gettop(L);
       if (!lua_istable(L, ci)) luaL_error(L, "sim: field 'contact' must be a table");
       chk_keys(L, ci, "sim.contact", ck);
-      s->mu_default = friction(L, ci, "sim.contact", 0);
-      s->gap_check = chk_bool(L, ci, "sim.contact", "separation", 1);
-      s->bond_default = bondcap(L, ci, "sim.contact", INFINITY);
+      s->cfg.mu_default = friction(L, ci, "sim.contact", 0);
+      s->cfg.gap_check = chk_bool(L, ci, "sim.contact", "separation", 1);
+      s->cfg.bond_default = bondcap(L, ci, "sim.contact", INFINITY);
     }
     lua_pop(L, 1);
     lua_pushvalue(L, simidx);
@@ -486,9 +487,9 @@ static int lcontact(lua_State *L) {
   lsim_hold(L, ls); /* the option tables may have metamethods */
   if (lua_istable(L, 2)) {
     chk_keys(L, 2, "contact", ck);
-    ls->s.mu_default = friction(L, 2, "contact", ls->s.mu_default);
-    ls->s.gap_check = chk_bool(L, 2, "contact", "separation", ls->s.gap_check);
-    ls->s.bond_default = bondcap(L, 2, "contact", ls->s.bond_default);
+    ls->s.cfg.mu_default = friction(L, 2, "contact", ls->s.cfg.mu_default);
+    ls->s.cfg.gap_check = chk_bool(L, 2, "contact", "separation", ls->s.cfg.gap_check);
+    ls->s.cfg.bond_default = bondcap(L, 2, "contact", ls->s.cfg.bond_default);
     return 0;
   } else {
     lbody *a = lbody_check(L, 2, ls, "contact");
@@ -501,9 +502,9 @@ static int lcontact(lua_State *L) {
       luaL_error(L, "contact: bodies '%s' and '%s' share one velocity field, so "
                     "they are bonded; give them different fields",
                  ls->s.bodies[a->idx].name, ls->s.bodies[b->idx].name);
-    mu = friction(L, 4, "contact", ls->s.mu_default);
+    mu = friction(L, 4, "contact", ls->s.cfg.mu_default);
     if (sim_set_law(&ls->s, fa, fb, mu,
-                    bondcap(L, 4, "contact", ls->s.bond_default)))
+                    bondcap(L, 4, "contact", ls->s.cfg.bond_default)))
       luaL_error(L, "contact: out of memory");
     return 0;
   }
@@ -679,7 +680,7 @@ static int lsettle(lua_State *L) {
                  0, LSIM_MAX_SPAN, CHK_OPENLO);
   lsim_hold(L, ls);
   if (!s->started) sim_begin(s);
-  for (d = 0; d < DIM; d++) g2 += s->gravity[d] * s->gravity[d];
+  for (d = 0; d < DIM; d++) g2 += s->cfg.gravity[d] * s->cfg.gravity[d];
   tw = g2 > 0 ? sqrt(2 * s->g.h / sqrt(g2)) : 100 * s->dt;
   c0 = lua_newuserdatauv(L, (size_t)(nb + 1) * (2 * DIM + 1) * sizeof *c0, 0);
   c1 = c0 + (size_t)(nb + 1) * DIM;
@@ -741,7 +742,8 @@ static int lenergy(lua_State *L) {
   setnum(L, "latent", s->e.latent);
   setnum(L, "transfer", s->e.transfer);
   setnum(L, "impact", s->e.impact);
-  setnum(L, "numerical", s->e.transfer + s->e.impact);
+  setnum(L, "bonding", s->e.bonding);
+  setnum(L, "numerical", s->e.transfer + s->e.impact + s->e.bonding);
   setnum(L, "initial", s->e.initial);
   setnum(L, "scale", sim_scale(s));
   setnum(L, "total", sim_total(s));
@@ -862,6 +864,35 @@ static int lwall_force(lua_State *L) {
   return DIM;
 }
 
+/* sim:wall_nodes("bottom") -> {x = {}, y = {}[, z = {}], force = {}}:
+** the nodes the wall presses on now and the compressive normal force at
+** each (diag_wall.h), as arrays in node order; empty for a side that is
+** not a wall */
+static int lwall_nodes(lua_State *L) {
+  static const char *const xn[] = {"x", "y", "z"};
+  lsim *ls = lsim_check(L, 1);
+  const char *name = luaL_checkstring(L, 2);
+  wall_press *w;
+  size_t n, i;
+  int k, d;
+  for (k = 0; k < NSIDES && strcmp(lsim_side_names[k], name) != 0; k++) {}
+  if (k == NSIDES)
+    luaL_error(L, "wall_nodes: no side '%s' (the sides are left, right, "
+                  "bottom, top%s)", name, DIM == 3 ? ", back, front" : "");
+  if (diag_wall(&ls->s, k, &w, &n)) return luaL_error(L, "%s", ls->s.err);
+  lua_createtable(L, 0, DIM + 1);
+  for (d = 0; d <= DIM; d++) {
+    lua_createtable(L, (int)n, 0);
+    for (i = 0; i < n; i++) {
+      lua_pushnumber(L, d < DIM ? w[i].x[d] : w[i].fn);
+      lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    lua_setfield(L, -2, d < DIM ? xn[d] : "force");
+  }
+  free(w);
+  return 1;
+}
+
 /* sim:overlap([maxdepth]) -> n, depth, body, host: particles buried in
 ** another body by a cell or more (diag_overlap.h), the deepest in cells,
 ** and for a deepest one its body and the body it lies in (ids, or nil) */
@@ -939,39 +970,39 @@ static int lindex(lua_State *L) {
   }
   else if (strcmp(k, "cell") == 0) lua_pushnumber(L, s->g.h);
   else if (strcmp(k, "dim") == 0) lua_pushinteger(L, DIM);
-  else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->flip);
-  else if (strcmp(k, "cfl") == 0) lua_pushnumber(L, s->cfl);
-  else if (strcmp(k, "friction") == 0) lua_pushnumber(L, s->mu_default);
+  else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->cfg.flip);
+  else if (strcmp(k, "cfl") == 0) lua_pushnumber(L, s->cfg.cfl);
+  else if (strcmp(k, "friction") == 0) lua_pushnumber(L, s->cfg.mu_default);
   else if (strcmp(k, "removed") == 0) lua_pushinteger(L, (lua_Integer)s->nremoved);
-  else if (strcmp(k, "threads") == 0) lua_pushinteger(L, s->threads);
+  else if (strcmp(k, "threads") == 0) lua_pushinteger(L, s->cfg.threads);
   else if (strcmp(k, "shared_nodes") == 0) lua_pushinteger(L, (lua_Integer)s->g.nshared);
   else if (strcmp(k, "memory") == 0) { /* bytes allocated, by owner */
     lua_createtable(L, 0, 4);
     setnum(L, "particles", (double)particles_mem(&s->ps));
-    setnum(L, "threads", (double)(s->redcap + s->bands.nrows *
-                                  (sizeof *s->bands.first + 1) +
-                                  marks_mem(&s->marks) +
-                                  (s->wext ? (size_t)(par_threads(s->par) - 1) *
-                                             s->wextn * sizeof *s->wext : 0)));
+    setnum(L, "threads", (double)(s->work.redcap + s->work.bands.nrows *
+                                  (sizeof *s->work.bands.first + 1) +
+                                  marks_mem(&s->work.marks) +
+                                  (s->work.wext ? (size_t)(par_threads(s->work.par) - 1) *
+                                             s->work.wextn * sizeof *s->work.wext : 0)));
     setnum(L, "capacity", (double)s->ps.cap);
     setnum(L, "grid", (double)grid_mem(&s->g));
   }
   else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
-  else if (strcmp(k, "update") == 0) lua_pushstring(L, s->update == UPDATE_MUSL    ? "musl"
-                                          : s->update == UPDATE_USAVG ? "usavg"
+  else if (strcmp(k, "update") == 0) lua_pushstring(L, s->cfg.update == UPDATE_MUSL    ? "musl"
+                                          : s->cfg.update == UPDATE_USAVG ? "usavg"
                                                                       : "usl");
-  else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->shape]);
+  else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->cfg.shape]);
   else if (strcmp(k, "ignition_time") == 0) {
     if (s->t_ignition < INFINITY) lua_pushnumber(L, s->t_ignition);
     else lua_pushnil(L);
   }
-  else if (strcmp(k, "ignition") == 0) lua_pushnumber(L, s->react_ign);
-  else if (strcmp(k, "reaction_tol") == 0) lua_pushnumber(L, s->react_tol);
+  else if (strcmp(k, "ignition") == 0) lua_pushnumber(L, s->cfg.react_ign);
+  else if (strcmp(k, "reaction_tol") == 0) lua_pushnumber(L, s->cfg.react_tol);
   else if (strcmp(k, "reacted") == 0) lua_pushnumber(L, react_mean(s));
   else if (strcmp(k, "reaction_substeps") == 0) lua_pushinteger(L, s->react_nsub);
   else if (strcmp(k, "transfer") == 0)
-    lua_pushstring(L, s->transfer == TRANSFER_APIC ? "apic"
-                      : s->transfer == TRANSFER_XPIC ? "xpic" : "flip");
+    lua_pushstring(L, s->cfg.transfer == TRANSFER_APIC ? "apic"
+                      : s->cfg.transfer == TRANSFER_XPIC ? "xpic" : "flip");
   else {
     static const char *const fields[] = {
         "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "cell",
@@ -998,16 +1029,16 @@ static int lnewindex(lua_State *L) {
   lua_pushvalue(L, 3);
   lua_setfield(L, -2, k);
   chk_keys(L, 4, "sim", keys);
-  if (strcmp(k, "flip") == 0) s->flip = chk_num(L, 4, "sim", k, 1, 0, 1, 0);
-  else if (strcmp(k, "cfl") == 0) s->cfl = chk_num(L, 4, "sim", k, 0.25, 0, 1, CHK_OPENLO);
-  else if (strcmp(k, "dt") == 0) s->dt_fixed = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
+  if (strcmp(k, "flip") == 0) s->cfg.flip = chk_num(L, 4, "sim", k, 1, 0, 1, 0);
+  else if (strcmp(k, "cfl") == 0) s->cfg.cfl = chk_num(L, 4, "sim", k, 0.25, 0, 1, CHK_OPENLO);
+  else if (strcmp(k, "dt") == 0) s->cfg.dt_fixed = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
   else if (strcmp(k, "t_end") == 0) s->t_end = chk_num(L, 4, "sim", k, 0, 0, HUGE_VAL, 0);
-  else if (strcmp(k, "friction") == 0) s->mu_default = friction(L, 4, "sim", s->mu_default);
+  else if (strcmp(k, "friction") == 0) s->cfg.mu_default = friction(L, 4, "sim", s->cfg.mu_default);
   else if (strcmp(k, "progress") == 0) ls->progress = lua_toboolean(L, 3);
   else if (strcmp(k, "ignition") == 0)
-    s->react_ign = chk_num(L, 4, "sim", k, 0.5, 0, 1, CHK_OPENLO);
+    s->cfg.react_ign = chk_num(L, 4, "sim", k, 0.5, 0, 1, CHK_OPENLO);
   else if (strcmp(k, "reaction_tol") == 0)
-    s->react_tol = chk_num(L, 4, "sim", k, REACT_TOL, 0, 1, CHK_OPENLO);
+    s->cfg.react_tol = chk_num(L, 4, "sim", k, REACT_TOL, 0, 1, CHK_OPENLO);
   else if (strcmp(k, "threads") == 0)
     sim_set_threads(s, (int)chk_num(L, 4, "sim", k, 1, 1, PAR_MAX, CHK_INT));
   /* a step made too small (or an end too far) while running: refused
@@ -1037,7 +1068,8 @@ void lsim_open(lua_State *L) {
       {"temperature", lsim_temperature}, {"render", lrender_sim},
       {"hotspots", lsim_hotspots},
       {"heat", lsim_heat},
-      {"wall_force", lwall_force}, {"overlap", loverlap},
+      {"wall_force", lwall_force}, {"wall_nodes", lwall_nodes},
+      {"overlap", loverlap},
       {"contacts", lcontacts}, {"state", lstate},
       {"settle", lsettle}, {"at_end", lat_end},
       {NULL, NULL}};

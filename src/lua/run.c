@@ -113,13 +113,14 @@ int run_claim_outdir(const char *dir, int overwrite, char *err,
 
 /* every term of the budget (docs/algorithm.md) is a column: total =
 ** kinetic + strain + potential + lag, residual = initial + boundary_work
-** + thermal_work - dissipated - plastic - viscous - settled - total, and
+** + thermal_work - dissipated - plastic - viscous - settled - transfer
+** - impact - bonding - total, and
 ** scale (sim_scale) the size it is measured against */
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
     "total", "residual", "px", "py", "angmom", "jmin", "jmax", "particles",
     "debonded", "bonded_area", "potential", "lag", "settled", "initial",
-    "scale", "transfer", "impact",
+    "scale", "transfer", "impact", "bonding",
     /* the reaction's heat and burn, the first ignition and the hot spots
     ** of sim:output{hotspots =} (react.h, lua_hotspot.c) */
     "chemical", "reacted", "ignition_time", "hotspots",
@@ -163,17 +164,17 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[18] = (double)s->ncut_total; v[19] = s->bond_area;
   v[20] = s->e.potential; v[21] = s->e.lag; v[22] = s->e.settled;
   v[23] = s->e.initial; v[24] = sim_scale(s);
-  v[25] = s->e.transfer; v[26] = s->e.impact;
+  v[25] = s->e.transfer; v[26] = s->e.impact; v[27] = s->e.bonding;
   /* the reaction's heat and burn; the first ignition (-1 before) */
-  v[27] = s->e.chemical; v[28] = react_mean(s);
-  v[29] = s->t_ignition < INFINITY ? s->t_ignition : -1;
-  lsim_hotspot_row(L, ls, &v[30], &v[31]);
+  v[28] = s->e.chemical; v[29] = react_mean(s);
+  v[30] = s->t_ignition < INFINITY ? s->t_ignition : -1;
+  lsim_hotspot_row(L, ls, &v[31], &v[32]);
   if (s->heat) {
-    v[32] = s->e.heat_friction; v[33] = s->e.heat_plastic;
-    v[34] = s->e.heat_viscous; v[35] = s->e.heat_source;
-    v[36] = s->e.heat_wall; v[37] = s->e.cold; v[38] = s->e.heat_boundary;
-    v[39] = s->e.heat_thermal; v[40] = sim_heat_residual(s);
-    v[41] = sim_residual_all(s);
+    v[33] = s->e.heat_friction; v[34] = s->e.heat_plastic;
+    v[35] = s->e.heat_viscous; v[36] = s->e.heat_source;
+    v[37] = s->e.heat_wall; v[38] = s->e.cold; v[39] = s->e.heat_boundary;
+    v[40] = s->e.heat_thermal; v[41] = sim_heat_residual(s);
+    v[42] = sim_residual_all(s);
   }
   if (NCOLS_3D) { /* the 3-D columns go before the heat's */
     double w[NCOLS_ALL + 3];
@@ -492,20 +493,20 @@ void run_check_steps(lua_State *L, lsim *ls, double t_end) {
   double span = t_end - s->t, dt, steps;
   if (!(span > 0)) return;
   if (!s->started) sim_measure(s); /* the particle speeds */
-  dt = s->dt_fixed > 0 ? s->dt_fixed : sim_stable_dt(s);
+  dt = s->cfg.dt_fixed > 0 ? s->cfg.dt_fixed : sim_stable_dt(s);
   steps = span / dt;
   if (!(steps <= LSIM_MAX_STEPS)) {
     double c = 0;
     int m;
     for (m = 0; m < s->nmat; m++)
       if (s->mats[m].c > c) c = s->mats[m].c;
-    if (s->dt_fixed > 0)
+    if (s->cfg.dt_fixed > 0)
       chk_error(L, "run: from t = %g to t = %g steps of dt = %g would take "
                    "%.3g steps (at most %.0e); give a larger 'dt'", s->t,
                 t_end, dt, steps, LSIM_MAX_STEPS);
     chk_error(L, "run: from t = %g to t = %g the step cfl * cell / (wave "
                  "speed + particle speed) = %g * %g / (%g + %g) = %g would "
-                 "take %.3g steps (at most %.0e)", s->t, t_end, s->cfl,
+                 "take %.3g steps (at most %.0e)", s->t, t_end, s->cfg.cfl,
               s->g.h, c, s->vmax, dt, steps, LSIM_MAX_STEPS);
   }
 }
@@ -643,7 +644,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   pl.next_t = t0 + 0.1 * (t_end - t0);
   warn_from = isfinite(t_end) ? t0 + WARN_FROM * (t_end - t0) : t0;
   pl.last_w = wall0;
-  prof_start(s->prof);
+  prof_start(s->work.prof);
   /* t_end = HUGE_VAL (sim:step) would make the tolerance inf - inf = NaN */
   while ((max_steps < 0 || k < max_steps) &&
          (isinf(t_end) || s->t < t_end - 1e-12 * (1 + fabs(t_end)))) {
@@ -653,7 +654,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     if (ls->drives || ls->sidefns) drives(L, simidx, ls);
     /* the temperature at the end of the coming step */
     if (ls->tempfn) s->temp = lsim_temperature_at(L, simidx, s->t + sim_next_dt(s));
-    prof_mark(s->prof, PROF_DIAG);
+    prof_mark(s->work.prof, PROF_DIAG);
     if (sim_step(s)) {
       failed_state(L, ls);
       luaL_error(L, "%s%s", s->err, ls->failed);
@@ -662,7 +663,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     if (ls->csv_open) residual_check(ls, warn_from);
     if (ls->csv_open && ls->csv_every > 0 && s->step % ls->csv_every == 0) csv_row(L, ls);
     if (ls->nevery) callbacks(L, simidx, ls);
-    prof_mark(s->prof, PROF_DIAG);
+    prof_mark(s->work.prof, PROF_DIAG);
     if (ls->csv_open && ls->out_every > 0 && s->t >= ls->out_next - 1e-9 * ls->out_every) {
       snapshot(L, ls);
       ls->out_next = sched_next(ls->out_next, ls->out_every, s->t, 1e-9 * ls->out_every);
@@ -676,7 +677,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     if (show) progress(ls, max_steps < 0 ? t_end : s->t, t0, wall0, step0, 0);
     else if (quietly && max_steps < 0)
       plain_progress(ls, &pl, t_end, t0, wall0, step0);
-    prof_mark(s->prof, PROF_OUTPUT);
+    prof_mark(s->work.prof, PROF_OUTPUT);
     if (interrupt_pending()) {
       interrupt_clear();
       if (show) progress(ls, t_end, t0, wall0, step0, 1);

@@ -128,7 +128,7 @@ static int32_t wall_scene(sim *s, double mu, const double p[2], const double q[2
   sim_init(s, lo, hi, 0.25, per, SHAPE_LINEAR, 2);
   s->sides[0].kind = SIDE_WALL;
   s->sides[0].mu = mu;
-  s->gap_check = 0;
+  s->cfg.gap_check = 0;
   s->nbody = 0;
   grid_reset(&s->g, 1);
   n = 2 * s->g.n[0];
@@ -145,7 +145,7 @@ static int32_t wall_scene(sim *s, double mu, const double p[2], const double q[2
 static void finish(sim *s, int32_t n) {
   int d;
   for (d = 0; d < 2; d++) s->g.q[d][n] /= s->g.m[n];
-  s->update = UPDATE_USL;
+  s->cfg.update = UPDATE_USL;
   book_finish(s);
 }
 

@@ -76,7 +76,7 @@ int main(void) {
   ** symmetric lattice, and I adds the particles' own a^2 / 6; each axis
   ** has the two others' sums 2 Q (2-D: z with x and y) */
   UNIT_CHECK(diag_bodies(&s, out) == 0, "diag runs");
-  a2 = (2 * s.lp) * (2 * s.lp);
+  a2 = (2 * s.cfg.lp) * (2 * s.cfg.lp);
   f = 2 * Q / (2 * Q + (double)out[0].n * a2 / 6);
   for (d = 0; d < 3; d++)
     UNIT_NEAR(out[0].omega[d], f * w[d], 1e-12, "rigid spin: omega component");

@@ -64,8 +64,8 @@ static void window_case(int maxv) {
     }
     g->nshared = ns;
     g->nslot = nsl;
-    s.normals = maxv ? NORMALS_MAXVOLUME : NORMALS_VOLUME;
-    s.normal_window = R;
+    s.cfg.normals = maxv ? NORMALS_MAXVOLUME : NORMALS_VOLUME;
+    s.cfg.normal_window = R;
     contact_normals(&s);
     for (k = 0; k < ns; k++) {
       int32_t nd = g->shared[k], sl;
@@ -181,8 +181,8 @@ static double plane_case(int R, double tol) {
       g->head[n] = -1;
   }
   g->nshared = ns;
-  s.normals = NORMALS_PLANE;
-  s.normal_window = R;
+  s.cfg.normals = NORMALS_PLANE;
+  s.cfg.normal_window = R;
   contact_normals(&s);
   for (n = 0; n < ns; n++) {
     int32_t nd = g->shared[n], s0 = grid_slot(g, nd, 0), s1 = grid_slot(g, nd, 1);

@@ -26,7 +26,7 @@ static int box(sim *s, int perx) {
   s->nfield = 1;
   s->mcut = 1e-12;
   s->dt = 1e-3;
-  s->gap_check = 0;
+  s->cfg.gap_check = 0;
   return 0;
 }
 
@@ -76,7 +76,7 @@ static void slip(int rule, double mu) {
   int e;
   const char *names[] = {"node", "patch", "couple"};
   if (box(&S, 0)) { UNIT_CHECK(0, "sim_init"); return; }
-  S.wall_rule = rule;
+  S.cfg.wall_rule = rule;
   S.sides[2].mu = mu;
   for (e = 0; e < DIM; e++) {
     v[e] = e == 1 ? -dn : 0.3 + 0.1 * e;
@@ -129,7 +129,7 @@ static void seam(void) {
   int32_t a, b, c;
   double va[DIM], vb[DIM], vc[DIM], da, db, dc;
   if (box(&S, 1)) { UNIT_CHECK(0, "sim_init"); return; }
-  S.wall_rule = WALL_PATCH;
+  S.cfg.wall_rule = WALL_PATCH;
   last = g->n[0] - 1;
   for (e = 0; e < DIM; e++) {
     i[e] = 4;

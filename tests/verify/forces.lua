@@ -1,9 +1,10 @@
 -- The forces walls and driven bodies put on the material (sim:wall_force,
--- b:force): a block resting on the floor under gravity is carried by the
--- floor's force, its weight; and the material's momentum changes by
--- exactly the impulses of the walls and of a driven plate, step by step
--- (internal forces cancel on the grid, and FLIP hands the grid's change
--- of momentum to the particles whole).
+-- sim:wall_nodes, b:force): a block resting on the floor under gravity is
+-- carried by the floor's force, its weight, also summed node by node;
+-- and the material's momentum changes by exactly the impulses of the
+-- walls and of a driven plate, step by step (internal forces cancel on
+-- the grid, and FLIP hands the grid's change of momentum to the
+-- particles whole).
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
@@ -24,6 +25,28 @@ do
   V.near("mean floor force over t = 25..50 / weight", f / n / 0.25, 1, 0.01)
   local lx = sim:wall_force("left")
   V.near("left wall force (nothing touches it)", lx, 0, 1e-12)
+end
+
+V.case "the floor node by node (sim:wall_nodes): a block brought to rest"
+do
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
+                         gravity = {0, -1}, t_end = 50}
+  local m = mvmpm.elastic {K = 10, G = 5, density = 1}
+  sim:body {shape = mvmpm.rect {lo = {0.25, 0}, hi = {0.75, 0.5}}, material = m}
+  sim:settle {t_max = 20}
+  local wn, fw, under = sim:wall_nodes("bottom"), 0, true
+  for i = 1, #wn.force do
+    fw = fw + wn.force[i]
+    under = under and wn.y[i] == 0 and wn.x[i] >= 0.25 - 1 / 16 and wn.x[i] <= 0.75 + 1 / 16
+  end
+  local _, fy = sim:wall_force("bottom")
+  V.near("nodal forces summed / weight", fw / 0.25, 1, 0.01)
+  V.near("nodal forces summed / the last step's floor force", fw / fy, 1, 0.01)
+  V.holds("the pressed nodes lie on the floor under the block (a cell beyond)",
+    under and #wn.force > 0, #wn.force)
+  V.holds("the left wall presses on no node", #sim:wall_nodes("left").force == 0)
+  local ok, msg = pcall(sim.wall_nodes, sim, "floor")
+  V.holds("a bad side is named in the error", not ok and msg:find("no side 'floor'") ~= nil)
 end
 
 V.case "momentum balance: the plate's and the walls' impulses"

@@ -41,7 +41,7 @@
 ** stays (the remap keeps the particles' approach there).
 */
 static int wall_split(const sim *s) {
-  return s->transfer != TRANSFER_FLIP || s->flip < 1;
+  return s->cfg.transfer != TRANSFER_FLIP || s->cfg.flip < 1;
 }
 
 /* what a normal impulse c (one component) of a node or slot of mass m

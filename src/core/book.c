@@ -31,10 +31,11 @@
 ** stresses see next (measured on the sliding disc, GIMP at 12 cells:
 ** residual -2.9 % before the hold, -0.7 % after).  For APIC, XPIC and
 ** the FLIP/PIC blend v^r is the remap of the velocities the particles
-** are given, not FLIP's; the difference is the transfer's, which
-** e.transfer books against FLIP's increment, so there the booking is
-** not exact (docs/verification.md, the piston pack).  Under USL there
-** is no remap and vL is used.
+** are given, not FLIP's: the rest of their change is the transfer's,
+** which g2p.c books with the same rule on each particle's mean
+** velocity, and the walls' normal impulses are booked here too
+** (boundary.c, wall_split), so that the kinetic energy's change is
+** accounted exactly.  Under USL there is no remap and vL is used.
 */
 #include "sim.h"
 
@@ -61,7 +62,10 @@ void book_finish(sim *s) {
   for (k = 0; k < NSIDES; k++) walls |= s->sides[k].kind == SIDE_WALL;
   /* the dense table carries the walls' friction only (contact acts at
   ** shared nodes, on slots), and its entries at shared nodes are zero */
-  if (walls) s->e.friction += half(g->nnodes, g->m, s->mcut, v, g->fi);
+  if (walls) {
+    s->e.friction += half(g->nnodes, g->m, s->mcut, v, g->fi);
+    s->e.impact += half(g->nnodes, g->m, s->mcut, v, g->ni);
+  }
   s->e.friction += half(g->nslot, g->sm, s->mcut, sv, g->sfi);
   s->e.impact += half(g->nslot, g->sm, s->mcut, sv, g->sni);
   s->e.bonding += half(g->nslot, g->sm, s->mcut, sv, g->sbi);

@@ -21,8 +21,8 @@ double grid_bytes(const double lo[DIM], const double hi[DIM], double h,
   ** an int (a 1e308 domain, a 1e-300 cell), before nodes_along casts */
   for (d = 0; d < DIM; d++)
     nodes *= floor((hi[d] - lo[d]) / h + 0.5) + 1 + 2 * pad;
-  /* m, p, f, q, fi per dimension, owner, head */
-  return nodes * (8.0 * (1 + 4 * DIM) + 8.0);
+  /* m, p, f, q, fi, ni per dimension, owner, head */
+  return nodes * (8.0 * (1 + 5 * DIM) + 8.0);
 }
 
 int grid_init(grid *g, const double lo[DIM], const double hi[DIM], double h,
@@ -50,7 +50,8 @@ int grid_init(grid *g, const double lo[DIM], const double hi[DIM], double h,
     g->f[d] = calloc(g->nnodes, sizeof(double));
     g->q[d] = calloc(g->nnodes, sizeof(double));
     g->fi[d] = calloc(g->nnodes, sizeof(double));
-    if (!g->p[d] || !g->f[d] || !g->q[d] || !g->fi[d]) return -1;
+    g->ni[d] = calloc(g->nnodes, sizeof(double));
+    if (!g->p[d] || !g->f[d] || !g->q[d] || !g->fi[d] || !g->ni[d]) return -1;
   }
   memset(g->owner, 0xff, g->nnodes * sizeof(int32_t));
   memset(g->head, 0xff, g->nnodes * sizeof(int32_t));
@@ -82,14 +83,14 @@ void grid_free(grid *g) {
   free(g->m); free(g->owner); free(g->head); free(g->shared);
   for (d = 0; d < DIM; d++) {
     free(g->p[d]); free(g->f[d]); free(g->q[d]);
-    free(g->fi[d]);
+    free(g->fi[d]); free(g->ni[d]);
   }
   slots_free(g);
   memset(g, 0, sizeof *g);
 }
 
 size_t grid_mem(const grid *g) {
-  size_t dense = g->nnodes * ((1 + 4 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
+  size_t dense = g->nnodes * ((1 + 5 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
   size_t slot = g->slotcap * (3 * sizeof(int32_t) + (2 + 7 * DIM) * sizeof(double));
   size_t mom = g->momcap * (1 + DIM + DIM * (DIM + 1) / 2) * sizeof(double);
   return dense + slot + mom + g->sharedcap * sizeof(int32_t);
@@ -104,6 +105,7 @@ void grid_clear(grid *g, size_t i0, size_t i1, int clear_q) {
     memset(g->f[d] + i0, 0, n);
     if (clear_q) memset(g->q[d] + i0, 0, n);
     memset(g->fi[d] + i0, 0, n);
+    memset(g->ni[d] + i0, 0, n);
   }
   memset(g->owner + i0, 0xff, (i1 - i0) * sizeof(int32_t));
 }

@@ -29,9 +29,10 @@ typedef struct grid {
   /* dense centre-of-mass field */
   double *m, *p[DIM], *f[DIM];
   double *q[DIM];      /* remapped momentum (MUSL) */
-  /* the friction (tangential) impulse the walls gave the node this step
-  ** (book.c books its work on the particles' motion) */
-  double *fi[DIM];
+  /* the friction (tangential) impulse the walls gave the node this step,
+  ** and, under the lossy transfers, their normal impulse (book.c books
+  ** their work on the particles' motion) */
+  double *fi[DIM], *ni[DIM];
   int32_t *owner;      /* first field seen at the node, -1 if none */
   int32_t *head;       /* first slot of a shared node, -1 otherwise */
   /* sparse slots, one per (shared node, field) */

@@ -101,8 +101,10 @@ typedef struct sim_energy {
   double chemical;   /* heat the reaction released, sum m Q d lambda
                      ** (react.c): an input to the heat, not to the
                      ** mechanical budget */
-  double transfer;   /* kinetic energy the transfer itself took from the
-                     ** particles, against FLIP's increment (g2p.c) */
+  double transfer;   /* what the transfer itself took from the particles:
+                     ** its change of their velocities beyond FLIP's
+                     ** increment, booked as an impulse's work on their
+                     ** mean velocity (g2p.c) */
   double impact;     /* what the normal impulses of contact and walls
                      ** dissipate: impacts are inelastic at a node */
   double bonding;    /* what bonded nodes take: the impulses that give

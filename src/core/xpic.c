@@ -33,7 +33,7 @@
 /* acc += A-numerator of u: each particle reads u at its nodes (its
 ** field's slot at shared nodes) and adds m_p S_ip (S u)_p to acc.
 ** keep: the first pass, u = v; (S v)_p is kept in the particle's L[0],
-** L[1] for g2p, which measures the transfer's loss against FLIP's
+** L[1] for g2p, which books the transfer's change beyond FLIP's
 ** v_p + S (vL - v) (g2p.c; the remap sets L afterwards) */
 STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared,
                                const int keep) {

@@ -60,15 +60,22 @@ end
 -- with resolution in every scheme (4 / 8 / 12 / 16 cells, B-spline XPIC
 -- +8.6 / +3.1 / +0.9 / +0.5 %).  At 8 cells it is asserted for pure
 -- FLIP, whose booking the transfer does not enter; at 12 cells for all.
+-- Where 8 cells is only printed, the residual must fall from 8 to 12.
+local res8 = {}
 for _, c in ipairs {8, 12} do
   V.case(string.format("disc dropped on the frictional floor (v = (1, -2) from y = 1.5), %d cells: budget", c))
-  for _, sc in ipairs(S.schemes) do
+  for k, sc in ipairs(S.schemes) do
     local r = S.run {cells = c, scheme = sc, mu = mu, v0 = {1, -2}, y0 = 1.5, T = 3, n = 6}
     local e = r.e
     local put = e.initial + e.boundary_work
+    local res = math.abs(e.residual) / put
     local name = string.format("%s: |residual| / (E0 + W_b), %d cells", S.name(sc), c)
-    if c == 8 and (sc.transfer ~= "flip" or sc.flip < 1) then V.info(name, math.abs(e.residual) / put)
-    else V.below(name, math.abs(e.residual) / put, 0.02) end
+    local lossy = sc.transfer ~= "flip" or sc.flip < 1
+    if c == 8 and lossy then V.info(name, res); res8[k] = res
+    else V.below(name, res, 0.02) end
+    if c == 12 and lossy then
+      V.below(string.format("%s: |residual| falls, 12 cells over 8", S.name(sc)), res / res8[k], 1)
+    end
     V.info(string.format("%s:   friction / (E0 + W_b)", S.name(sc)), e.dissipated / put)
     V.info(string.format("%s:   impact / (E0 + W_b)", S.name(sc)), e.impact / put)
     V.info(string.format("%s:   transfer / (E0 + W_b)", S.name(sc)), e.transfer / put)

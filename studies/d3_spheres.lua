@@ -20,7 +20,7 @@ local function spheres(cells, off, t_end, o)
   local sim = mvmpm.sim {dim = 3, domain = {x = {-sh, 3 - sh}, y = {0, 1.5 + off}, z = {0, 1.5}},
     cell = 1 / cells, ppc = 2, sides = "free", shape = o.shape, transfer = o.transfer,
     update = o.update, normals = o.normals, normal_window = o.normal_window,
-    contact_gap = o.contact_gap}
+    contact_gap = o.contact_gap, cfl = o.cfl}
   local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
   local a = sim:body {name = "a", material = m, velocity = {0.1, 0, 0},
                       shape = mvmpm.ball {center = {0.9, 0.75, 0.75}, radius = 0.5}}
@@ -85,6 +85,11 @@ local schemes = {
   {name = "GIMP", shape = "gimp"},
   {name = "GIMP, maxvolume, window 4", shape = "gimp", normals = "maxvolume", normal_window = 4},
   {name = "B-spline", shape = "bspline2"},
+  -- the 3-D bounce's scheme (tests/verify/d3_bounce_usavg.lua)
+  {name = "GIMP, USAVG, cfl 0.4", shape = "gimp", update = "usavg", cfl = 0.4},
+  {name = "linear, USAVG, cfl 0.4", update = "usavg", cfl = 0.4},
+  {name = "GIMP, USAVG, cfl 0.4, maxvolume, window 4", shape = "gimp", update = "usavg", cfl = 0.4,
+   normals = "maxvolume", normal_window = 4},
 }
 for _, case in ipairs {{"head on", 0, 5}, {"oblique", 0.5, 6}} do
   V.case("two spheres, " .. case[1] .. ": energy change per scheme")

@@ -9,35 +9,10 @@
 -- for 3-D impacts: tests/verify/d3_bounce_usavg.lua.  Two spheres
 -- colliding: tests/verify/d3_spheres.lua.  Larger grids and the other
 -- schemes: studies/d3_bounce.lua, docs/accuracy.md.
-local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
-local function norm3(w) return math.sqrt(w[1]^2 + w[2]^2 + w[3]^2) end
-
--- the sphere bounce at one resolution and scheme: energy error at t = 14,
--- momenta between impacts, the largest spin |omega| R / |v| seen
-local function bounce(cells, o)
-  local p = {cells = cells}
-  for k, v in pairs(o or {}) do p[k] = v end
-  local c0 = os.clock()
-  local sim = mvmpm.load("scenarios/sphere_bounce.lua", p)
-  local b = sim:bodies()[1]
-  local e0 = sim:energy()
-  local m, r = b:mass(), {spin = 0}
-  -- t = 5: after the right wall (x); t = 9.5: after the front (z), before
-  -- the top (y, from t = 10); t = 14: after all three
-  for _, t in ipairs {5, 9.5, 14} do
-    sim:run(t)
-    local e, d = sim:energy(), b:diag()
-    r[t] = {px = e.px / m, py = e.py / m, pz = e.pz / m}
-    r.spin = math.max(r.spin, norm3(d.omega) * 0.5 / (0.1 * math.sqrt(3)))
-  end
-  r.p0 = {e0.px / m, e0.py / m, e0.pz / m}
-  r.energy = sim:energy().total / e0.total - 1
-  r.cpu = os.clock() - c0
-  r.sim = sim
-  return r
-end
+-- the scene and its measures: lua/mvmpm/bounce3.lua
+local run = require("mvmpm.bounce3").run
 
 local function order(a, b, ra, rb) return math.log(math.abs(ra) / math.abs(rb)) / math.log(b / a) end
 
@@ -45,7 +20,7 @@ local CELLS = {8, 12, 16}
 V.case "sphere bounce, defaults (linear hats, FLIP, MUSL): energy after 3 impacts, 8 12 16 cells"
 local def = {}
 for k, c in ipairs(CELLS) do
-  def[k] = bounce(c)
+  def[k] = run(c)
   V.info(string.format("%d cells: energy change E(14)/E0 - 1", c), def[k].energy)
   V.info(string.format("%d cells: largest spin |omega| R / |v|", c), def[k].spin)
   V.info(string.format("%d cells: CPU seconds (os.clock)", c), def[k].cpu, "s")

@@ -17,44 +17,18 @@
 -- gains energy in flight (the residual: -1.8 % at cfl 0.4, 8 cells; -5.5
 -- % at 16), USAVG does not, so only USAVG may take the longer step.
 -- Larger grids: studies/d3_bounce.lua, docs/accuracy.md.
-local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
 local SCHEME = {shape = "gimp", update = "usavg", cfl = 0.4}
 
-local function norm3(w) return math.sqrt(w[1]^2 + w[2]^2 + w[3]^2) end
-
--- one run: the energy change at t = 14 and its booked parts (per E0),
--- the momenta between impacts, the largest spin |omega| R / |v| seen
-local function bounce(cells)
-  local p = {cells = cells}
-  for k, v in pairs(SCHEME) do p[k] = v end
-  local c0 = os.clock()
-  local sim = mvmpm.load("scenarios/sphere_bounce.lua", p)
-  local b = sim:bodies()[1]
-  local e0 = sim:energy()
-  local m, r = b:mass(), {spin = 0}
-  for _, t in ipairs {5, 9.5, 14} do
-    sim:run(t)
-    local e, d = sim:energy(), b:diag()
-    r[t] = {px = e.px / m, py = e.py / m, pz = e.pz / m}
-    r.spin = math.max(r.spin, norm3(d.omega) * 0.5 / (0.1 * math.sqrt(3)))
-  end
-  local e = sim:energy()
-  r.p0 = {e0.px / m, e0.py / m, e0.pz / m}
-  r.energy = e.total / e0.total - 1
-  r.impact = e.impact / e0.total
-  r.residual = e.residual / e0.total
-  r.cpu = os.clock() - c0
-  r.sim = sim
-  return r
-end
+-- the scene and its measures: lua/mvmpm/bounce3.lua
+local run = require("mvmpm.bounce3").run
 
 local CELLS = {8, 12, 16}
 V.case "sphere bounce, GIMP, USAVG, cfl 0.4: energy after 3 impacts, 8 12 16 cells"
 local res = {}
 for k, c in ipairs(CELLS) do
-  res[k] = bounce(c)
+  res[k] = run(c, SCHEME)
   V.info(string.format("%d cells: energy change E(14)/E0 - 1", c), res[k].energy)
   V.info(string.format("%d cells: walls' impact loss booked / E0", c), res[k].impact)
   V.info(string.format("%d cells: budget residual / E0", c), res[k].residual)

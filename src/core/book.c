@@ -34,7 +34,7 @@
 ** are given, not FLIP's: the rest of their change is the transfer's,
 ** which g2p.c books with the same rule on each particle's mean
 ** velocity, and the walls' normal impulses are booked here too
-** (boundary.c, wall_split), so that the kinetic energy's change is
+** (boundary.c, sim_lossy), so that the kinetic energy's change is
 ** accounted exactly.  Under USL there is no remap and vL is used.
 */
 #include "sim.h"
@@ -62,11 +62,15 @@ void book_finish(sim *s) {
   for (k = 0; k < NSIDES; k++) walls |= s->sides[k].kind == SIDE_WALL;
   /* the dense table carries the walls' friction only (contact acts at
   ** shared nodes, on slots), and its entries at shared nodes are zero */
+  /* the walls' normal impulses are split only under the lossy transfers
+  ** (contact's, in sni, always), the bonded nodes' only in scenes with
+  ** bonds: elsewhere those tables stay zero and are not summed */
+  const int split = sim_lossy(cfg);
   if (walls) {
     s->e.friction += half(g->nnodes, g->m, s->mcut, v, g->fi);
-    s->e.impact += half(g->nnodes, g->m, s->mcut, v, g->ni);
+    if (split) s->e.impact += half(g->nnodes, g->m, s->mcut, v, g->ni);
   }
   s->e.friction += half(g->nslot, g->sm, s->mcut, sv, g->sfi);
   s->e.impact += half(g->nslot, g->sm, s->mcut, sv, g->sni);
-  s->e.bonding += half(g->nslot, g->sm, s->mcut, sv, g->sbi);
+  if (s->fbond >= 0) s->e.bonding += half(g->nslot, g->sm, s->mcut, sv, g->sbi);
 }

@@ -40,10 +40,6 @@
 ** of the energy, on v^r -0.07 %.  Under FLIP the whole booking below
 ** stays (the remap keeps the particles' approach there).
 */
-static int wall_split(const sim *s) {
-  return s->cfg.transfer != TRANSFER_FLIP || s->cfg.flip < 1;
-}
-
 /* what a normal impulse c (one component) of a node or slot of mass m
 ** and momentum p0 at the step's start dissipates, in the frame of the
 ** wall moving at vw: split, the first half, -c (v^n / 2 - vw), with c
@@ -51,7 +47,7 @@ static int wall_split(const sim *s) {
 ** wall's velocity, or the patch's new one) */
 static void wall_impact(sim *s, double m, double p0, double vw, double vnew,
                         double c, double *ni) {
-  if (wall_split(s)) {
+  if (sim_lossy(&s->cfg)) {
     s->e.impact -= (0.5 * p0 / m - vw) * c;
     *ni += c;
   } else
@@ -60,7 +56,7 @@ static void wall_impact(sim *s, double m, double p0, double vw, double vnew,
 
 /* one node (or slot) of mass m against side k; returns the impulse,
 ** its friction part kept in fi (or sfi) for book.c, its normal part in
-** ni (sni) where wall_split */
+** ni (sni) under the lossy transfers (sim_lossy) */
 static int wall_node(sim *s, side *sd, int d, double sign, double m,
                      double *const p0[DIM], double *const mom[DIM], size_t i,
                      int slot, double gap, double *imp, double *const fi[DIM],
@@ -104,7 +100,7 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
   ** approach, which the positions do not make, and booked on it the
   ** loss overshoots: a plastic disc thrown at a wall, linear hats,
   ** 2.7 % of its energy against 0.9 %); split under the lossy transfers
-  ** (wall_split) */
+  ** (sim_lossy) */
   s->e.friction += loss / m;
   if (s->heat)
     heat_wall_friction(s, slot ? -1 : (int32_t)i, slot ? (int32_t)i : -1,

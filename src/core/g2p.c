@@ -45,9 +45,6 @@
 ** each particle's loss in L[0] until the remap pass, whose sums run in
 ** chunk order, adds it up: the same at any thread count.
 */
-static int g2p_lossy(const sim_cfg *cfg) {
-  return cfg->transfer != TRANSFER_FLIP || cfg->flip < 1;
-}
 
 /* APIC: the affine field's kinetic energy, sum_p 1/2 m_p sum_i S_ip
 ** |C_p r_ip|^2, at the particles' present positions (the state before
@@ -168,7 +165,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   const double dt = s->dt, flip = cfg->flip, pic = 1.0 - flip, lp = cfg->lp;
   const int full = mode == G2P_MOVE, rowlen = stencil_rowlen(kind);
   const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
-  const int xp = cfg->transfer == TRANSFER_XPIC, lossy = g2p_lossy(cfg);
+  const int xp = cfg->transfer == TRANSFER_XPIC, lossy = sim_lossy(cfg);
   /* the dense grid only through these: loads need not wait for stores */
   const double *restrict gq[DIM], *restrict gf[DIM];
   double *restrict gp[DIM];
@@ -511,7 +508,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   particles *ps = &s->ps;
   const body *bd = s->bodies;
   const double dt = s->dt, lp = cfg->lp;
-  const int lossy = g2p_lossy(cfg), apic = cfg->transfer == TRANSFER_APIC;
+  const int lossy = sim_lossy(cfg), apic = cfg->transfer == TRANSFER_APIC;
   const double *restrict gp[DIM], *restrict gq[DIM];
   stencil_geo geo;
   box bx;

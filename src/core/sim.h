@@ -165,6 +165,14 @@ typedef struct sim_cfg {
   int threads;
 } sim_cfg;
 
+/* whether the transfer replaces FLIP's increment by a smoother velocity
+** (a PIC share, APIC, XPIC): its change is then booked as e.transfer
+** (g2p.c) and the walls' normal impulses in two halves (boundary.c,
+** book.c) */
+static inline int sim_lossy(const sim_cfg *cfg) {
+  return cfg->transfer != TRANSFER_FLIP || cfg->flip < 1;
+}
+
 /*
 ** The scratch of a step: the thread pool, the scatter plan and the
 ** rooms the threaded phases sum and record into.  Made or grown by

@@ -4,7 +4,8 @@
 --   Block on a flat body rotated 30 and 45 degrees to the grid, mu = 0
 --   and 0.2: |a / a_ref - 1|, rotation, hop at 8, 16, 32 cells per block
 --   side with linear hats and GIMP, "maxvolume" and "plane" over a
---   window of 4 cells, and node-by-node "mass".
+--   window of 4 cells, and node-by-node "mass"; then at 15, 22, 37, 52
+--   and 60 degrees with linear hats and the two windowed methods.
 --   Two discs, head on and glancing (offset 0.2): energy, tangential
 --   velocity kept, |Jt / Jn| at 40, 80, 160 cells across, each shape,
 --   contact_gap "touch" and "step".
@@ -37,6 +38,26 @@ for _, c in ipairs {{30, 0}, {30, 0.2}, {45, 0}, {45, 0.2}} do
       end
       print(string.format("   %2d deg mu %.1f %-6s %-12s %s  order %.2f", c[1], c[2], shape, m,
                           table.concat(t, "  "), order(e)))
+    end
+  end
+end
+
+-- The same block at other angles (linear hats, 8 and 16 cells, or 8,
+-- 16, 32): how far the two windowed methods carry beyond 30 and 45
+-- degrees.  Signed a / a_ref - 1; with friction the reference is the
+-- difference g (sin - mu cos), small at shallow slopes, so a given error
+-- in the friction force is a larger one in a.
+print("-- block at other angles, linear: a / a_ref - 1 (hop/L) [cpu s]")
+for _, deg in ipairs {15, 22, 37, 52, 60} do
+  for _, mu in ipairs {0, 0.2} do
+    for _, m in ipairs {"maxvolume/4", "plane/4"} do
+      local t, e = {}, {}
+      for i, k in ipairs(K) do
+        local r = C.block {k = k, method = m, mu = mu, deg = deg}
+        e[i] = math.abs(r.a - 1)
+        t[i] = string.format("%d: %+.4f (%.4f) [%.1f]", k, r.a - 1, r.hop, r.cpu)
+      end
+      print(string.format("   %2d deg mu %.1f %-12s %s  order %.2f", deg, mu, m, table.concat(t, "  "), order(e)))
     end
   end
 end

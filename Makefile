@@ -280,6 +280,7 @@ figures: $(BIN)
 	./$(BIN) test docs/figures/fig5.lua
 	./$(BIN) test docs/figures/bounce.lua
 	./$(BIN) test docs/figures/contact.lua
+	./$(BIN) test docs/figures/contact_cases.lua
 
 # the accuracy-cost study (docs/accuracy.md): each case over its grid of
 # settings, one after the other (timings are taken one run at a time);

@@ -211,10 +211,34 @@ static void normals(sim *s, size_t k0, size_t k1) {
   const int R = cfg->normal_window;
   size_t k;
   for (k = k0; k < k1; k++) {
-    int32_t n = g->shared[k], sl;
-    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
+    int32_t n = g->shared[k], sl, first = g->head[n];
+    /* the plane's equations are the same for every field of the node
+    ** but for the sign of the right side, so with two fields the second
+    ** normal is the first's negative, to the bit: taken so, not solved
+    ** again (where the first fell back on the gradients it is solved) */
+    const int two = first >= 0 && g->snext[first] >= 0 && g->snext[g->snext[first]] < 0;
+    int fitted = 0;
+    for (sl = first; sl >= 0; sl = g->snext[sl]) {
       double v[DIM], own[DIM], rest[DIM], len = 0, lo = 0, lr = 0;
       int d;
+      if (pl) {
+        double A[NP][NP] = {{0}}, y[NP] = {0}, u[DIM], l2 = 0;
+        if (two && sl != first && fitted) {
+          for (d = 0; d < DIM; d++) g->sn[d][sl] = -g->sn[d][first];
+          continue;
+        }
+        window(g, a, n, g->sfield[sl], R, own, rest, A, y);
+        if (solve(A, y, u)) {
+          for (d = 0; d < DIM; d++) l2 += u[d] * u[d];
+          if (l2 > 0) {
+            len = sqrt(l2);
+            for (d = 0; d < DIM; d++) g->sn[d][sl] = u[d] / len;
+            fitted = sl == first;
+            continue;
+          }
+        }
+      }
+      /* the gradients' sums: the method, or the plane's fallback */
       window(g, a, n, g->sfield[sl], R, own, rest, NULL, NULL);
       for (d = 0; d < DIM; d++) {
         v[d] = own[d] - rest[d];
@@ -223,17 +247,7 @@ static void normals(sim *s, size_t k0, size_t k1) {
         lr += rest[d] * rest[d];
       }
       len = sqrt(len);
-      if (pl) {
-        double A[NP][NP] = {{0}}, y[NP] = {0}, u[DIM], l2 = 0;
-        window(g, a, n, g->sfield[sl], R, own, rest, A, y);
-        if (solve(A, y, u)) {
-          for (d = 0; d < DIM; d++) l2 += u[d] * u[d];
-          if (l2 > 0) {
-            for (d = 0; d < DIM; d++) v[d] = u[d];
-            len = sqrt(l2);
-          }
-        }
-      } else if (maxv && lo != lr) {
+      if (maxv && lo != lr) {
         const double *w = lo > lr ? own : rest, sg = lo > lr ? 1.0 : -1.0;
         for (d = 0; d < DIM; d++) v[d] = sg * w[d];
         len = sqrt(lo > lr ? lo : lr);

@@ -30,15 +30,16 @@ B.line("ratio", "(c) t(1000 grains) / t(10 grains)", per[1000] / per[10], "",
   "per particle-step")
 
 -- The cost of contact accuracy: the 1,000-grain bed with each way of
--- taking the contact normals (sim.normals), as a ratio to the default
--- ("mass").  The four scenes are stepped in turns (n steps of each per
+-- taking the contact normals (sim.normals; "m/R": over a window of R
+-- cells, sim.normal_window), as a ratio to the default ("mass").  The four scenes are stepped in turns (n steps of each per
 -- round, the order rotated each round) so a neighbour's load falls on
 -- all of them; the ratio is the median of the rounds'.
 do
-  local opts = {"mass", "volume", "maxvolume", "plane"}
+  local opts = {"mass", "volume", "maxvolume", "plane", "maxvolume/4", "plane/4"}
   local sims, per = {}, {}
   for k, o in ipairs(opts) do
-    sims[k] = packing(50, 20, {normals = o})
+    local m, w = o:match("^(%a+)/(%d+)$")
+    sims[k] = packing(50, 20, {normals = m or o, normal_window = tonumber(w) or 0})
     sims[k]:step(3)
     per[k] = {}
   end

@@ -5,7 +5,8 @@
 --   and 0.2: |a / a_ref - 1|, rotation, hop at 8, 16, 32 cells per block
 --   side with linear hats and GIMP, "maxvolume" and "plane" over a
 --   window of 4 cells, and node-by-node "mass"; then at 15, 22, 37, 52
---   and 60 degrees with linear hats and the two windowed methods.
+--   and 60 degrees with linear hats and the windowed methods (the
+--   plane also over 8 cells).
 --   Two discs, head on and glancing (offset 0.2): energy, tangential
 --   velocity kept, |Jt / Jn| at 40, 80, 160 cells across, each shape,
 --   contact_gap "touch" and "step".
@@ -50,7 +51,7 @@ end
 print("-- block at other angles, linear: a / a_ref - 1 (hop/L) [cpu s]")
 for _, deg in ipairs {15, 22, 37, 52, 60} do
   for _, mu in ipairs {0, 0.2} do
-    for _, m in ipairs {"maxvolume/4", "plane/4"} do
+    for _, m in ipairs {"maxvolume/4", "plane/4", "plane/8"} do
       local t, e = {}, {}
       for i, k in ipairs(K) do
         local r = C.block {k = k, method = m, mu = mu, deg = deg}

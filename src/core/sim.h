@@ -46,7 +46,7 @@ enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
 ** check like any contact */
 enum release_kind { RELEASE_OPEN, RELEASE_CONTACT };
 /* the widest window the normals may take (cells each way) */
-#define NORMAL_WINDOW_MAX 4
+#define NORMAL_WINDOW_MAX 8
 #define NSIDES (2 * DIM)
 /* side index: 2 d for the low side of dimension d, 2 d + 1 for the high */
 

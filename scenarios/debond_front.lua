@@ -17,6 +17,9 @@ local P = mvmpm.params {
   release = 13,        -- when the seed lets go
   cells = 16,          -- cells per unit length
   t_end = 18,
+  traction = "mixture", -- the traction the bond test reads ("fit": fitted, averaged over bond_length)
+  bond_length = 0,     -- with "fit": the length of interface it is averaged over
+  shape = "linear",    -- shape functions ("linear", "gimp", "bspline2")
 }
 
 local sim = mvmpm.sim {
@@ -24,6 +27,9 @@ local sim = mvmpm.sim {
   cell = 1 / P.cells,
   t_end = P.t_end,
   sides = "free",
+  shape = P.shape,
+  bond_traction = P.traction,
+  bond_length = P.bond_length,
 }
 local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
 -- each grip travels u = load strength / (K + 4G/3) with the speed

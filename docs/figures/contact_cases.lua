@@ -15,6 +15,10 @@
 --   contact_onset.png    the concentric cylinders' debond onset over the
 --                        plane-strain Lame value at 25, 35, 50 cells
 --                        across the domain, per bond traction
+--   contact_friction_work.png  a disc thrown along a frictional floor
+--                        (lua/mvmpm/slide.lua): |friction work / the
+--                        rigid disc's - 1| at 8, 16, 32 cells per
+--                        diameter, per wall rule and scheme
 local mvmpm = require "mvmpm"
 local I = require "mvmpm.incline"
 local P = require "mvmpm.piston"
@@ -112,3 +116,30 @@ do
               xlabel = "cells across the domain", ylabel = "onset / Lame onset", series = series}
 end
 print("contact cases: pictures in " .. dir)
+
+-- the disc thrown along the floor: friction work against the rigid
+-- disc's, per wall rule and scheme (tests/verify/friction_work.lua)
+do
+  local series = {}
+  local cases = {
+    {"node", {shape = "linear", transfer = "flip", flip = 1}},
+    {"couple", {shape = "linear", transfer = "flip", flip = 1}},
+    {"patch", {shape = "linear", transfer = "flip", flip = 1}},
+    {"patch", {shape = "gimp", transfer = "apic"}},
+    {"patch", {shape = "bspline2", transfer = "flip", flip = 1}},
+    {"patch", {shape = "linear", transfer = "xpic"}},
+  }
+  for _, k in ipairs(cases) do
+    local x, y = {}, {}
+    for _, c in ipairs {8, 16, 32} do
+      local r = S.run {cells = c, scheme = k[2], mu = 0.3, T = 2, n = 40, wall_contact = k[1]}
+      x[#x + 1], y[#y + 1] = c, floor(math.abs(r.e.dissipated / r.rigid - 1))
+      print(string.format("friction work %-6s %-14s %2d cells: W / W_rigid %.4f", k[1], S.name(k[2]), c,
+                          r.e.dissipated / r.rigid))
+    end
+    series[#series + 1] = {x = x, y = y, style = "both", label = k[1] .. ", " .. S.name(k[2])}
+  end
+  mvmpm.plot {file = dir .. "/contact_friction_work.png", xlog = true, ylog = true,
+              title = "Disc thrown along a floor (mu 0.3): friction work",
+              xlabel = "cells per diameter", ylabel = "|W / W_rigid disc - 1|", series = series}
+end

@@ -27,9 +27,27 @@ function M.name(sc)
   return sc.shape .. "/" .. sc.transfer .. (sc.flip and sc.flip < 1 and (" " .. sc.flip) or "")
 end
 
+-- The rigid disc's friction work for the seeded particles: thrown at v0
+-- without spin, it slides until its contact point stops, keeping its
+-- angular momentum about that point, m v0 R = m v R + I w with v = w R,
+-- and friction takes what the kinetic energy loses,
+--   W = 1/2 m v0^2 I / (I + m R^2)   (1/6 m v0^2 for I = m R^2 / 2),
+-- whatever mu, once it rolls.  I from the particles about their mass
+-- centre, each with its own square's m a^2 / 6 (a = cell / ppc).
+function M.rigid(sim, v0, cell, ppc)
+  local x, ms = sim:particles("position"), sim:particles("mass")
+  local m, cx, cy = 0, 0, 0
+  for i, mi in ipairs(ms) do m, cx, cy = m + mi, cx + mi * x.x[i], cy + mi * x.y[i] end
+  cx, cy = cx / m, cy / m
+  local a, I = cell / ppc, 0
+  for i, mi in ipairs(ms) do I = I + mi * ((x.x[i] - cx) ^ 2 + (x.y[i] - cy) ^ 2 + a * a / 6) end
+  return 0.5 * m * v0 * v0 * I / (I + m * M.R ^ 2)
+end
+
 -- o: cells (per diameter), scheme, mu, v0 = {vx, vy}, y0 (centre
--- height), T, n (samples).  Returns the energy table, the mass, the
--- friction work of the model sum F dt . slip, and the last state.
+-- height), T, n (samples), wall_contact.  Returns the energy table, the
+-- mass, the friction work of the model sum F dt . slip, the rigid disc's
+-- friction work (M.rigid, for v0 along the floor), and the last state.
 function M.run(o)
   local g, R = M.g, M.R
   local sc = o.scheme
@@ -39,7 +57,7 @@ function M.run(o)
   local sim = mvmpm.sim {
     domain = {x = {0, 4}, y = {0, y0 + 1.5}}, cell = 2 * R / o.cells, ppc = 2,
     shape = sc.shape, transfer = sc.transfer, flip = sc.flip or 1, cfl = 0.25,
-    t_end = T, gravity = {0, -g},
+    t_end = T, gravity = {0, -g}, wall_contact = o.wall_contact,
     sides = {left = "periodic", right = "periodic",
              bottom = {"wall", friction = o.mu}, top = "wall"},
   }
@@ -48,6 +66,7 @@ function M.run(o)
                          velocity = v0}
   local m = 0
   for _, x in ipairs(sim:particles("mass")) do m = m + x end
+  local rigid = M.rigid(sim, v0[1], 2 * R / o.cells, 2)
   local work, prev = 0, nil
   for k = 1, n do
     sim:run(T * k / n)
@@ -58,7 +77,7 @@ function M.run(o)
     if prev then work = work + m * (prev.vx - now.vx) * 0.5 * (prev.slip + now.slip) end
     prev = now
   end
-  return {e = sim:energy(), m = m, model = work, d = disc:diag(), sim = sim}
+  return {e = sim:energy(), m = m, model = work, rigid = rigid, d = disc:diag(), sim = sim}
 end
 
 return M

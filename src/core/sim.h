@@ -304,6 +304,9 @@ double sim_stable_dt(const sim *s);
 ** contact, whose energy error on impacts grows as the grid is refined
 ** (docs/accuracy.md) */
 const char *sim_advice(const sim *s);
+/* a warning when a wall with friction acts by the node rule, under which
+** friction hardly turns a round body (docs/verification.md), or NULL */
+const char *sim_wall_advice(const sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
 /* total energy, kinetic + strain + lag.  Velocities and stresses are a

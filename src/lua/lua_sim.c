@@ -968,6 +968,10 @@ static int lindex(lua_State *L) {
     const char *adv = sim_advice(s);
     if (adv) lua_pushstring(L, adv); else lua_pushnil(L);
   }
+  else if (strcmp(k, "wall_advice") == 0) {
+    const char *adv = sim_wall_advice(s);
+    if (adv) lua_pushstring(L, adv); else lua_pushnil(L);
+  }
   else if (strcmp(k, "cell") == 0) lua_pushnumber(L, s->g.h);
   else if (strcmp(k, "dim") == 0) lua_pushinteger(L, DIM);
   else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->cfg.flip);
@@ -1005,7 +1009,7 @@ static int lindex(lua_State *L) {
                       : s->cfg.transfer == TRANSFER_XPIC ? "xpic" : "flip");
   else {
     static const char *const fields[] = {
-        "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "cell",
+        "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "wall_advice", "cell",
         "dim", "flip", "cfl", "friction", "removed", "threads", "shared_nodes",
         "memory", "outdir", "update", "shape", "transfer", "ignition_time",
         "ignition", "reaction_tol", "reacted", "reaction_substeps", NULL};

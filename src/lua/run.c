@@ -630,11 +630,17 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   if (!ls->advised) { /* now that the bodies (fields) are known */
     /* printed once per process: a study or a test script that builds
     ** many such scenes says it once; each keeps it in sim.advice */
-    static int printed;
+    static int printed, wprinted;
     const char *adv = sim_advice(s);
     ls->advised = 1;
     if (adv && !printed) {
       printed = 1;
+      fprintf(stderr, "mvmpm: warning: %s: %s\n",
+              ls->scene[0] ? ls->scene : "sim", adv);
+    }
+    adv = sim_wall_advice(s);
+    if (adv && !wprinted) {
+      wprinted = 1;
       fprintf(stderr, "mvmpm: warning: %s: %s\n",
               ls->scene[0] ? ls->scene : "sim", adv);
     }

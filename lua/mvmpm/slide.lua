@@ -45,7 +45,8 @@ function M.rigid(sim, v0, cell, ppc)
 end
 
 -- o: cells (per diameter), scheme, mu, v0 = {vx, vy}, y0 (centre
--- height), T, n (samples), wall_contact.  Returns the energy table, the
+-- height), T, n (samples), wall_contact, run (function(sim, t), default
+-- sim:run).  Returns the energy table, the
 -- mass, the friction work of the model sum F dt . slip, the rigid disc's
 -- friction work (M.rigid, for v0 along the floor), and the last state.
 function M.run(o)
@@ -67,9 +68,10 @@ function M.run(o)
   local m = 0
   for _, x in ipairs(sim:particles("mass")) do m = m + x end
   local rigid = M.rigid(sim, v0[1], 2 * R / o.cells, 2)
+  local run = o.run or function(x, t) x:run(t) end
   local work, prev = 0, nil
   for k = 1, n do
-    sim:run(T * k / n)
+    run(sim, T * k / n)
     local d = disc:diag()
     local now = {vx = d.vx, slip = d.vx + d.omega * R}
     -- the friction force from the disc's own momentum, on its contact

@@ -7,7 +7,7 @@
 -- once the disc rests on the floor.  Shared by
 -- tests/verify/friction_budget.lua and studies/grain_budget.lua.
 local mvmpm = require "mvmpm"
-local M = {g = 1, R = 0.5, K = 400}
+local M = {g = 1, R = 0.5, K = 400, H = 0.25}
 
 -- every scheme: shape x transfer (APIC only on GIMP and B-splines, as
 -- the engine allows), and a FLIP/PIC blend
@@ -34,19 +34,27 @@ end
 --   W = 1/2 m v0^2 I / (I + m R^2)   (1/6 m v0^2 for I = m R^2 / 2),
 -- whatever mu, once it rolls.  I from the particles about their mass
 -- centre, each with its own square's m a^2 / 6 (a = cell / ppc).
-function M.rigid(sim, v0, cell, ppc)
-  local x, ms = sim:particles("position"), sim:particles("mass")
+-- (body: the disc's body index, when there are others)
+function M.rigid(sim, v0, cell, ppc, body)
+  local x, ms, b = sim:particles("position"), sim:particles("mass"), sim:particles("body")
   local m, cx, cy = 0, 0, 0
-  for i, mi in ipairs(ms) do m, cx, cy = m + mi, cx + mi * x.x[i], cy + mi * x.y[i] end
+  local function mine(i) return not body or b[i] == body end
+  for i, mi in ipairs(ms) do
+    if mine(i) then m, cx, cy = m + mi, cx + mi * x.x[i], cy + mi * x.y[i] end
+  end
   cx, cy = cx / m, cy / m
   local a, I = cell / ppc, 0
-  for i, mi in ipairs(ms) do I = I + mi * ((x.x[i] - cx) ^ 2 + (x.y[i] - cy) ^ 2 + a * a / 6) end
-  return 0.5 * m * v0 * v0 * I / (I + m * M.R ^ 2)
+  for i, mi in ipairs(ms) do
+    if mine(i) then I = I + mi * ((x.x[i] - cx) ^ 2 + (x.y[i] - cy) ^ 2 + a * a / 6) end
+  end
+  return 0.5 * m * v0 * v0 * I / (I + m * M.R ^ 2), m
 end
 
 -- o: cells (per diameter), scheme, mu, v0 = {vx, vy}, y0 (centre
--- height), T, n (samples), wall_contact, run (function(sim, t), default
--- sim:run).  Returns the energy table, the
+-- height above the floor), T, n (samples), wall_contact, run
+-- (function(sim, t), default sim:run), slab (true: the floor is a driven
+-- slab's top face, friction the contact law's; then normals,
+-- normal_window).  Returns the energy table, the
 -- mass, the friction work of the model sum F dt . slip, the rigid disc's
 -- friction work (M.rigid, for v0 along the floor), and the last state.
 function M.run(o)
@@ -55,19 +63,26 @@ function M.run(o)
   local v0 = o.v0 or {1, 0}
   local y0 = o.y0 or R
   local T, n = o.T or 2, o.n or 80
+  -- with a slab, the floor is the top of a driven (rigid, still) body of
+  -- thickness H: friction is then the contact law between the two
+  local H = o.slab and M.H or 0
   local sim = mvmpm.sim {
-    domain = {x = {0, 4}, y = {0, y0 + 1.5}}, cell = 2 * R / o.cells, ppc = 2,
+    domain = {x = {0, 4}, y = {0, H + y0 + 1.5}}, cell = 2 * R / o.cells, ppc = 2,
     shape = sc.shape, transfer = sc.transfer, flip = sc.flip or 1, cfl = 0.25,
     t_end = T, gravity = {0, -g}, wall_contact = o.wall_contact,
+    normals = o.normals, normal_window = o.normal_window,
     sides = {left = "periodic", right = "periodic",
-             bottom = {"wall", friction = o.mu}, top = "wall"},
+             bottom = {"wall", friction = o.slab and 0 or o.mu}, top = "wall"},
+    contact = o.slab and {friction = o.mu} or nil,
   }
-  local disc = sim:body {shape = mvmpm.disk {center = {1, y0}, radius = R},
+  if o.slab then
+    sim:body {name = "slab", shape = mvmpm.rect {lo = {0, 0}, hi = {4, H}},
+              material = mvmpm.elastic {K = 1000, G = 500, density = 1}, driven = {0, 0}}
+  end
+  local disc = sim:body {shape = mvmpm.disk {center = {1, H + y0}, radius = R},
                          material = mvmpm.elastic {K = M.K, G = M.K / 2, density = 1},
                          velocity = v0}
-  local m = 0
-  for _, x in ipairs(sim:particles("mass")) do m = m + x end
-  local rigid = M.rigid(sim, v0[1], 2 * R / o.cells, 2)
+  local rigid, m = M.rigid(sim, v0[1], 2 * R / o.cells, 2, o.slab and 2 or nil)
   local run = o.run or function(x, t) x:run(t) end
   local work, prev = 0, nil
   for k = 1, n do

@@ -1,0 +1,35 @@
+-- Study: the debond front of scenarios/debond_front.lua (lua/mvmpm/front.lua
+-- measures it) against the resolution, 16 / 24 / 32 / 48 cells per unit,
+-- per bond traction: the mixture (a strength criterion at the node, no
+-- length of its own) and the fitted traction averaged over a fixed
+-- length of interface, bond_length = 0.1 and 0.2 (a process zone: the
+-- longer, the tougher), with linear hats and GIMP.  Reference: a front
+-- driven by its own tip cannot outrun the Rayleigh wave, c_R = 0.6542;
+-- what is looked for is whether the speed settles as the grid is refined
+-- (the change between resolutions, printed) and how the length sets it.
+--
+--   ./mvmpm test studies/debond_front.lua      (STUDY_QUICK=1: 16, 24, 32)
+local V = require "mvmpm.verify"
+local F = require "mvmpm.front"
+
+local cells = os.getenv("STUDY_QUICK") == "1" and {16, 24, 32} or {16, 24, 32, 48}
+for _, shape in ipairs {"linear", "gimp"} do
+  for _, rule in ipairs {{"mixture", 0}, {"fit", 0.1}, {"fit", 0.2}} do
+    local name = string.format("%s, %s%s", shape, rule[1], rule[2] > 0 and (" over " .. rule[2]) or "")
+    V.case(name)
+    local prev, dprev
+    for _, c in ipairs(cells) do
+      local v, len, cpu = F.run {cells = c, traction = rule[1], bond_length = rule[2], shape = shape}
+      V.info(string.format("%s, %d cells: front speed / c_R", name, c), v)
+      V.info(string.format("%s, %d cells: debonded length at t = 17.5", name, c), len)
+      V.info(string.format("%s, %d cells: CPU s after t = 12.9", name, c), cpu)
+      if prev then
+        local d = math.abs(v - prev)
+        V.info(string.format("%s: |speed change| to %d cells", name, c), d)
+        if dprev and d > 0 then V.info(string.format("%s: ratio of successive changes", name), d / dprev) end
+        dprev = d
+      end
+      prev = v
+    end
+  end
+end

@@ -117,3 +117,43 @@ for _, nm in ipairs {{"mass", 0}, {"maxvolume", 4}} do
     V.below(name .. ": |residual| / (E0 + W_b)", math.abs(e.residual) / (e.initial + e.boundary_work), 0.02)
   end
 end
+
+-- The same in 3-D: a ball (R = 0.5, the same material) thrown at v0 = 1
+-- along the floor of a box periodic along x, walled in y and z, mu 0.3;
+-- the rigid ball's W = 1/2 m v0^2 I / (I + m R^2) (1/7 m v0^2 for a
+-- uniform ball), I about the rolling axis from the particles (each
+-- cube's m a^2 / 6).  Measured (one-off runs, 16 cells in docs): patch
+-- 1.083 / 1.038 / 1.020, node 1.97 / 1.39 / 1.21 at 8 / 12 / 16 cells.
+V.case "3-D: a ball thrown along a frictional floor, per wall rule"
+do
+  local mvmpm = require "mvmpm"
+  local function ball(c, wall)
+    local R, cell = 0.5, 1 / c
+    local sim = mvmpm.sim {dim = 3, domain = {x = {0, 3}, y = {0, 2}, z = {0, 1.5}}, cell = cell,
+      ppc = 2, cfl = 0.25, t_end = 2, gravity = {0, -1, 0}, wall_contact = wall,
+      sides = {left = "periodic", right = "periodic", bottom = {"wall", friction = mu}, top = "wall",
+               back = "wall", front = "wall"}}
+    sim:body {shape = mvmpm.ball {center = {0.8, R, 0.75}, radius = R},
+              material = mvmpm.elastic {K = 400, G = 200, density = 1}, velocity = {v0, 0, 0}}
+    local x, ms = sim:particles("position"), sim:particles("mass")
+    local m, cx, cy = 0, 0, 0
+    for i, mi in ipairs(ms) do m, cx, cy = m + mi, cx + mi * x.x[i], cy + mi * x.y[i] end
+    cx, cy = cx / m, cy / m
+    local a, I = cell / 2, 0
+    for i, mi in ipairs(ms) do I = I + mi * ((x.x[i] - cx) ^ 2 + (x.y[i] - cy) ^ 2 + a * a / 6) end
+    sim:run(2)
+    local e = sim:energy()
+    return e.dissipated / (0.5 * m * v0 * v0 * I / (I + m * R * R)),
+           e.residual / (e.initial + e.boundary_work)
+  end
+  local p8, r8 = ball(8, "patch")
+  local p12, r12 = ball(12, "patch")
+  local n8 = ball(8, "node")
+  V.info("3-D patch, 8 cells: friction work / rigid ball's", p8)
+  V.info("3-D patch, 12 cells: friction work / rigid ball's", p12)
+  V.info("3-D node, 8 cells: friction work / rigid ball's", n8)
+  V.below("3-D patch: friction work's error falls 8 -> 12 cells", math.abs(p12 - 1), math.abs(p8 - 1))
+  V.below("3-D patch, 8 cells: |residual| / (E0 + W_b)", math.abs(r8), 0.02)
+  V.below("3-D patch, 12 cells: |residual| / (E0 + W_b)", math.abs(r12), 0.02)
+  V.above("3-D node, 8 cells: friction work / rigid ball's (the ball slides on)", n8, 1.5)
+end

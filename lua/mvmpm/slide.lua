@@ -33,7 +33,9 @@ end
 -- and friction takes what the kinetic energy loses,
 --   W = 1/2 m v0^2 I / (I + m R^2)   (1/6 m v0^2 for I = m R^2 / 2),
 -- whatever mu, once it rolls.  I from the particles about their mass
--- centre, each with its own square's m a^2 / 6 (a = cell / ppc).
+-- centre, each with its own square's m a^2 / 6 (a = cell / ppc); in 3-D
+-- the same sums give a ball's I about the z axis, its rolling axis when
+-- thrown along x on a floor normal to y.
 -- (body: the disc's body index, when there are others)
 function M.rigid(sim, v0, cell, ppc, body)
   local x, ms, b = sim:particles("position"), sim:particles("mass"), sim:particles("body")

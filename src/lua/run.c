@@ -616,6 +616,13 @@ static void failed_state(lua_State *L, lsim *ls) {
              "could not be written (%s)", err);
 }
 
+/* a warning about the scene's settings, printed once per process (*done) */
+static void warn_once(const lsim *ls, int *done, const char *adv) {
+  if (!adv || *done) return;
+  *done = 1;
+  fprintf(stderr, "mvmpm: warning: %s: %s\n", ls->scene[0] ? ls->scene : "sim", adv);
+}
+
 int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   lsim *ls = lsim_check(L, simidx);
   sim *s = &ls->s;
@@ -631,19 +638,9 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     /* printed once per process: a study or a test script that builds
     ** many such scenes says it once; each keeps it in sim.advice */
     static int printed, wprinted;
-    const char *adv = sim_advice(s);
     ls->advised = 1;
-    if (adv && !printed) {
-      printed = 1;
-      fprintf(stderr, "mvmpm: warning: %s: %s\n",
-              ls->scene[0] ? ls->scene : "sim", adv);
-    }
-    adv = sim_wall_advice(s);
-    if (adv && !wprinted) {
-      wprinted = 1;
-      fprintf(stderr, "mvmpm: warning: %s: %s\n",
-              ls->scene[0] ? ls->scene : "sim", adv);
-    }
+    warn_once(ls, &printed, sim_advice(s));
+    warn_once(ls, &wprinted, sim_wall_advice(s));
   }
   if (isfinite(t_end)) run_check(L, simidx, ls, t_end);
   out_start(L, ls);
@@ -715,11 +712,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     const char *adv = sim_budget_advice(s);
     if (adv) {
       ls->budgeted = 1;
-      if (!printed) {
-        printed = 1;
-        fprintf(stderr, "mvmpm: warning: %s: %s\n",
-                ls->scene[0] ? ls->scene : "sim", adv);
-      }
+      warn_once(ls, &printed, adv);
     }
   }
   return 0;

@@ -30,11 +30,15 @@ local S = require "mvmpm.slide"
 local cells = {8, 16, 32}
 local mu, v0 = 0.3, 1
 
+-- the final speed over the rigid disc's rolling speed, v0 m R^2 / (I + m R^2)
+-- = v0 (1 - 2 W / (m v0^2)), for a result of S.run
+local function rolling(r)
+  return r.d.vx / (v0 * (1 - 2 * r.rigid / (r.m * v0 * v0)))
+end
+
 local function run(wall, sc, c)
   local r = S.run {cells = c, scheme = sc, mu = mu, T = 2, n = 40, wall_contact = wall}
-  -- the rolling speed the rigid disc ends at, from W: m R^2 / (I + m R^2)
-  -- = 1 - 2 W / (m v0^2)
-  return {w = r.e.dissipated / r.rigid, v = r.d.vx / (v0 * (1 - 2 * r.rigid / (r.m * v0 * v0))),
+  return {w = r.e.dissipated / r.rigid, v = rolling(r),
           res = r.e.residual / (r.e.initial + r.e.boundary_work), sim = r.sim}
 end
 
@@ -113,7 +117,7 @@ for _, nm in ipairs {{"mass", 0}, {"maxvolume", 4}} do
     local e, name = r.e, string.format("slab, %s/%d normals, %d cells", nm[1], nm[2], c)
     V.info(name .. ": friction work / rigid disc's", e.dissipated / r.rigid)
     V.info(name .. ": impact / rigid disc's friction work", e.impact / r.rigid)
-    V.info(name .. ": final speed / rigid rolling speed", r.d.vx / (v0 * (1 - 2 * r.rigid / (r.m * v0 * v0))))
+    V.info(name .. ": final speed / rigid rolling speed", rolling(r))
     V.below(name .. ": |residual| / (E0 + W_b)", math.abs(e.residual) / (e.initial + e.boundary_work), 0.02)
   end
 end
@@ -121,8 +125,8 @@ end
 -- The same in 3-D: a ball (R = 0.5, the same material) thrown at v0 = 1
 -- along the floor of a box periodic along x, walled in y and z, mu 0.3;
 -- the rigid ball's W = 1/2 m v0^2 I / (I + m R^2) (1/7 m v0^2 for a
--- uniform ball), I about the rolling axis from the particles (each
--- cube's m a^2 / 6).  Measured (one-off runs, 16 cells in docs): patch
+-- uniform ball), I about the rolling axis (z) from the particles, as
+-- S.rigid takes it (each cube's own m a^2 / 6 about that axis).  Measured (one-off runs, 16 cells in docs): patch
 -- 1.083 / 1.038 / 1.020, node 1.97 / 1.39 / 1.21 at 8 / 12 / 16 cells.
 V.case "3-D: a ball thrown along a frictional floor, per wall rule"
 do
@@ -135,16 +139,10 @@ do
                back = "wall", front = "wall"}}
     sim:body {shape = mvmpm.ball {center = {0.8, R, 0.75}, radius = R},
               material = mvmpm.elastic {K = 400, G = 200, density = 1}, velocity = {v0, 0, 0}}
-    local x, ms = sim:particles("position"), sim:particles("mass")
-    local m, cx, cy = 0, 0, 0
-    for i, mi in ipairs(ms) do m, cx, cy = m + mi, cx + mi * x.x[i], cy + mi * x.y[i] end
-    cx, cy = cx / m, cy / m
-    local a, I = cell / 2, 0
-    for i, mi in ipairs(ms) do I = I + mi * ((x.x[i] - cx) ^ 2 + (x.y[i] - cy) ^ 2 + a * a / 6) end
+    local W = S.rigid(sim, v0, cell, 2)
     sim:run(2)
     local e = sim:energy()
-    return e.dissipated / (0.5 * m * v0 * v0 * I / (I + m * R * R)),
-           e.residual / (e.initial + e.boundary_work)
+    return e.dissipated / W, e.residual / (e.initial + e.boundary_work)
   end
   local p8, r8 = ball(8, "patch")
   local p12, r12 = ball(12, "patch")

@@ -34,7 +34,7 @@
 ** -c_r . (v_r^n + v_r^r) / 2 summed over the fields (the same in any
 ** frame, as sum_r c_r = 0; with a driven partner, taken in its frame,
 ** it is the drive's work on r less what r gains), is what contact
-** dissipates: the first half here (lose()), the second in book.c once
+** dissipates: the first half here (contact_lose()), the second in book.c once
 ** the particles have moved.  Why not the kinetic energy the correction
 ** itself removes, (|t|^2 - |t'|^2) / (2 m_r): at a node holding a sliver
 ** of a body (tiny m_r) the forces give a large velocity that the
@@ -546,8 +546,8 @@ static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
 ** its work on half the velocity the step began with, relative to the
 ** reference velocity vref, -c . (v_r^n / 2 - vref); the impulse is kept
 ** in a (sfi or sni) for book_finish, which adds -c . v_r^new / 2 */
-static double lose(const grid *g, int32_t sl, const double vref[DIM],
-                   const double c[DIM], double *const a[DIM]) {
+double contact_lose(const grid *g, int32_t sl, const double vref[DIM],
+                    const double c[DIM], double *const a[DIM]) {
   double mr = g->sm[sl], w = 0;
   int d;
   if (!(mr > 0)) return 0;
@@ -648,6 +648,10 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
   if (rec) wk->cbody[k0] = -1;
   if (M <= s->mcut) return;
+  if (cfg->body_rule == BODY_PATCH && wk->cplab[n] >= 0) {
+    booked(s, k0, 0, 0, 0, 0, rec); /* contact_patch.c's */
+    return;
+  }
   for (sl = g->head[n]; sl >= 0 && ns < MAXSLOTS; sl = g->snext[sl]) {
     slots[ns++] = sl;
     if (s->fdriven[g->sfield[sl]] >= 0 && drv < 0) drv = sl;
@@ -687,7 +691,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
         /* the fields' nodal velocities differ by how their particles
         ** sample the motion; making them one is an inelastic collision
         ** of the fields at the node, whose loss is booked as a contact
-        ** impulse's (lose(), e.bonding).  The slot's internal force
+        ** impulse's (contact_lose(), e.bonding).  The slot's internal force
         ** impulse, dt f less gravity's, is kept for the work the
         ** stresses do on the common velocity (bond_remap) */
         for (d = 0; d < DIM; d++) {
@@ -758,9 +762,9 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
         mom[d][n] += c;
         cn[d] = cc[k][d] - ct[k][d];
       }
-      fric += lose(g, sl, vref, ct[k], g->sfi);
-      imp += lose(g, sl, vref, cn, g->sni);
-      if (bonds) bnd += lose(g, sl, vref, cb[k], g->sbi);
+      fric += contact_lose(g, sl, vref, ct[k], g->sfi);
+      imp += contact_lose(g, sl, vref, cn, g->sni);
+      if (bonds) bnd += contact_lose(g, sl, vref, cb[k], g->sbi);
     }
     booked(s, k0, fric, cuts, imp, bnd, rec);
     if (s->heat) heat_contact(s, slots, ns, drv, fric);
@@ -777,9 +781,9 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       cn[d] = c - ct[k][d];
       cb[k][d] = b;
     }
-    fric += lose(g, sl, vref, ct[k], g->sfi);
-    imp += lose(g, sl, vref, cn, g->sni);
-    if (bonds) bnd += lose(g, sl, vref, cb[k], g->sbi);
+    fric += contact_lose(g, sl, vref, ct[k], g->sfi);
+    imp += contact_lose(g, sl, vref, cn, g->sni);
+    if (bonds) bnd += contact_lose(g, sl, vref, cb[k], g->sbi);
   }
   booked(s, k0, fric, cuts, imp, bnd, rec);
   if (s->heat) heat_contact(s, slots, ns, -1, fric);
@@ -806,6 +810,16 @@ int contact_prepare(sim *s) {
   if (grow((void **)&wk->crec, &nc, g->nshared, CREC * sizeof *wk->crec) ||
       grow((void **)&wk->cbody, &wk->cnodecap, g->nshared, sizeof *wk->cbody))
     return -1;
+  if (s->cfg.body_rule == BODY_PATCH) {
+    /* contact_patch.c: a label per node, -1 between steps, and a list */
+    if (!wk->cplab) {
+      size_t i;
+      if (!(wk->cplab = malloc(g->nnodes * sizeof *wk->cplab))) return -1;
+      for (i = 0; i < g->nnodes; i++) wk->cplab[i] = -1;
+    }
+    if (grow((void **)&wk->cplist, &wk->cplistcap, g->nshared, sizeof *wk->cplist))
+      return -1;
+  }
   return 0;
 }
 static void apply_part(void *arg, int t, int nparts) {
@@ -866,10 +880,13 @@ void contact_apply(sim *s) {
   s->ncut = 0;
   s->bond_area = 0;
   if (s->fbond >= 0 && cfg->bond_fit) par_run(wk->par, fits_part, s);
+  if (cfg->body_rule == BODY_PATCH) contact_patches(s);
   if (wk->cnodecap >= g->nshared) {
     par_run(wk->par, apply_part, s);
     apply_sums(s);
   } else
     for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);
   if (s->fbond >= 0) bond_sums(s);
+  if (cfg->body_rule == BODY_PATCH)
+    for (k = 0; k < g->nshared; k++) wk->cplab[g->shared[k]] = -1;
 }

@@ -88,6 +88,8 @@ void sim_free(sim *s) {
   free(s->work.wpatch);
   free(s->work.crec);
   free(s->work.cbody);
+  free(s->work.cplab);
+  free(s->work.cplist);
   free(s->work.bfit);
   free(s->work.bffield);
   free(s->work.prof);

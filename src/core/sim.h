@@ -33,6 +33,9 @@ enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* ... WALL_COUPLE: the patch rule with sliding friction put at the wall
 ** line by a couple on the first node line inside (boundary.c) */
 enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE };
+/* how contact between two bodies acts: node by node (contact.c) or one
+** velocity change per side over each contact patch (contact_patch.c) */
+enum body_rule { BODY_NODE, BODY_PATCH };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
@@ -152,6 +155,7 @@ typedef struct sim_cfg {
   int gap_step;      /* ... judged at the step's end (contact.c closing) */
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
   int wall_rule;     /* enum wall_rule: node by node or per contact patch */
+  int body_rule;     /* enum body_rule: the same between bodies */
   int normals;       /* enum normals_kind: how contact normals are taken */
   int normal_window; /* ... from the shared nodes within this many cells */
   double mcut_rel;   /* mcut as a fraction of the lightest particle */
@@ -197,6 +201,10 @@ typedef struct sim_work {
   double *crec;
   int32_t *cbody;
   size_t cnodecap;
+  /* contact_patch.c: per node its patch (-1: none, and between steps),
+  ** and the nodes of the patch being flooded */
+  int32_t *cplab, *cplist;
+  size_t cplistcap;
   /* per node, the bond traction's sums over the particles near, not at,
   ** an interface (bond.c: BF_* arrays of nnodes each), and the field they
   ** belong to */
@@ -359,6 +367,12 @@ void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
 int contact_prepare(sim *s);   /* contact.c: room for its records */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
+void contact_patches(sim *s);  /* contact_patch.c: ... per contact patch
+                                  (body_contact = "patch"), first */
+/* contact.c: the first half of what slot sl's impulse c dissipates,
+** relative to vref; c kept in a for book_finish */
+double contact_lose(const grid *g, int32_t sl, const double vref[DIM],
+                    const double c[DIM], double *const a[DIM]);
 /* bond fit sums: weight, first and second moments of the offset from
 ** the node, stress (xx, xy, yy), stress times offset (a * DIM + c) */
 enum { BF_W, BF_U = 1, BF_UU = 1 + DIM, BF_S = 1 + DIM + DIM * (DIM + 1) / 2,

@@ -255,7 +255,7 @@ int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
-      "wall_remap", "wall_contact", "normals", "normal_window", "contact_gap",
+      "wall_remap", "wall_contact", "body_contact", "normals", "normal_window", "contact_gap",
       "xpic", "bond_release", "bond_traction", "bond_length", "dim", NULL};
   static const char *const updates[] = {"usl", "musl", "usavg", NULL};
   static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
@@ -263,6 +263,7 @@ int lsim_new(lua_State *L) {
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   static const char *const gapopt[] = {"touch", "step", NULL};
   static const char *const wallopt[] = {"node", "patch", "couple", NULL};
+  static const char *const bodyopt[] = {"node", "patch", NULL};
   static const char *const releaseopt[] = {"open", "contact", NULL};
   static const char *const tractionopt[] = {"mixture", "fit", NULL};
   static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
@@ -420,6 +421,7 @@ int lsim_new(lua_State *L) {
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
     s->cfg.wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
     s->cfg.wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
+    s->cfg.body_rule = chk_option(L, 1, what, "body_contact", BODY_NODE, bodyopt);
     s->cfg.normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
     s->cfg.gap_step = chk_option(L, 1, what, "contact_gap", s->cfg.gap_step, gapopt);
     s->cfg.release = chk_option(L, 1, what, "bond_release", RELEASE_OPEN, releaseopt);

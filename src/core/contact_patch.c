@@ -81,17 +81,21 @@ static int patch(sim *s, const int32_t *list, size_t len) {
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   double Ma = 0, Mb = 0, Pa[DIM] = {0}, Pb[DIM] = {0}, N[DIM] = {0}, W = 0;
+  double S[DIM] = {0}, red;
   double v[DIM], dp[DIM], t[DIM], c[DIM], cn[DIM], ct[DIM], nn = 0, dn = 0;
   double tt = 0, touch = -HUGE_VAL, fn = 1, mu, work = 0, Fs[DIM] = {0};
   int32_t a = -1, b = -1, fb;
   int drv, d;
   size_t i;
+  pair(s, list[0], &a, &b);
+  fb = g->sfield[b];
+  drv = s->fdriven[fb] >= 0;
   for (i = 0; i < len; i++) {
     double ma, mb, w;
     pair(s, list[i], &a, &b);
     ma = g->sm[a];
     mb = g->sm[b];
-    w = s->fdriven[g->sfield[b]] >= 0 ? ma : ma * mb / (ma + mb);
+    w = ma * mb / (ma + mb);
     Ma += ma;
     Mb += mb;
     W += w;
@@ -99,23 +103,27 @@ static int patch(sim *s, const int32_t *list, size_t len) {
       Pa[d] += g->sq[d][a];
       Pb[d] += g->sq[d][b];
       N[d] += w * g->sn[d][a];
+      /* against a drive, its velocity, not its nodes' */
+      S[d] += w * (g->sq[d][a] / ma - (drv ? s->bodies[s->fdriven[fb]].vdrive[d]
+                                           : g->sq[d][b] / mb));
     }
     if (cfg->gap_check && g->sext[a] + g->sext[b] > touch)
       touch = g->sext[a] + g->sext[b];
   }
-  fb = g->sfield[b];
-  drv = s->fdriven[fb] >= 0;
   for (d = 0; d < DIM; d++) nn += N[d] * N[d];
   nn = sqrt(nn);
   if (!(nn >= PATCH_COHERENCE * W)) return 1;
   if (drv) {
     const body *bd = &s->bodies[s->fdriven[fb]];
     for (d = 0; d < DIM; d++) v[d] = bd->vdrive[d];
-  } else
+    red = Ma;
+  } else {
     for (d = 0; d < DIM; d++) v[d] = (Pa[d] + Pb[d]) / (Ma + Mb);
+    red = Ma * Mb / (Ma + Mb);
+  }
   for (d = 0; d < DIM; d++) {
     N[d] /= nn;
-    dp[d] = Pa[d] - Ma * v[d];
+    dp[d] = red * S[d] / W;
     dn += dp[d] * N[d];
     c[d] = cn[d] = ct[d] = 0;
   }

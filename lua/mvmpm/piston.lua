@@ -42,7 +42,8 @@ function M.pack(n, seed)
 end
 
 -- o: cells (per smallest diameter, 2 rmin), scheme {shape, transfer,
--- flip}, mu, n (discs, 30), seed, v (piston speed, 0.5), T (4);
+-- flip}, mu, n (discs, 30), seed, v (piston speed, 0.5), T (4),
+-- body_contact and wall_contact (the sim's);
 -- samples, sample: sample(energy, t) is called at T k / samples.
 -- Returns the energy table, the piston's work, the CPU time.
 function M.run(o)
@@ -53,7 +54,7 @@ function M.run(o)
     domain = {x = {0, M.W}, y = {0, M.H}}, cell = 2 * M.rmin / o.cells, ppc = 2,
     shape = sc.shape, transfer = sc.transfer, flip = sc.flip or 1, cfl = 0.25,
     t_end = T, sides = {left = wall, right = wall, bottom = wall, top = wall},
-    contact = {friction = mu},
+    contact = {friction = mu}, body_contact = o.body_contact, wall_contact = o.wall_contact,
   }
   local m = mvmpm.elastic {K = 100, G = 50, density = 1}
   for _, g in ipairs(M.pack(o.n or 30, o.seed or 1)) do

@@ -10,7 +10,7 @@ local mvmpm = require "mvmpm"
 local M = {g = 1, R = 0.5, T = 2, H = 0.25}
 
 -- o: cells, deg, mu, and optionally ppc (2), shape, transfer, flip,
--- update, cfl (0.25), wall_contact, normals, normal_window, threads, slab (nil: the floor wall is the
+-- update, cfl (0.25), wall_contact, body_contact, normals, normal_window, threads, slab (nil: the floor wall is the
 -- incline; "driven" or "elastic": a slab of thickness H is), w0 (initial
 -- spin), run (function(sim, t), default sim:run).  Returns {a, alpha, hop, e (sim:energy()), th, wmin, wmax}.
 function M.run(o)
@@ -23,7 +23,8 @@ function M.run(o)
   local sim = mvmpm.sim {
     domain = {x = {0, 4}, y = {0, 1.5 + H}}, cell = 1 / o.cells, ppc = o.ppc or 2,
     shape = o.shape, transfer = o.transfer, flip = o.flip, update = o.update,
-    cfl = o.cfl or 0.25, wall_contact = o.wall_contact, threads = o.threads, t_end = T,
+    cfl = o.cfl or 0.25, wall_contact = o.wall_contact, body_contact = o.body_contact,
+    threads = o.threads, t_end = T,
     normals = o.normals, normal_window = o.normal_window,
     gravity = {g * math.sin(th), -g * math.cos(th)},
     sides = {left = "periodic", right = "periodic",

@@ -81,7 +81,6 @@ static int patch(sim *s, const int32_t *list, size_t len) {
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   double Ma = 0, Mb = 0, Pa[DIM] = {0}, Pb[DIM] = {0}, N[DIM] = {0}, W = 0;
-  double S[DIM] = {0}, red;
   double v[DIM], dp[DIM], t[DIM], c[DIM], cn[DIM], ct[DIM], nn = 0, dn = 0;
   double tt = 0, touch = -HUGE_VAL, fn = 1, mu, work = 0, Fs[DIM] = {0};
   int32_t a = -1, b = -1, fb;
@@ -103,9 +102,6 @@ static int patch(sim *s, const int32_t *list, size_t len) {
       Pa[d] += g->sq[d][a];
       Pb[d] += g->sq[d][b];
       N[d] += w * g->sn[d][a];
-      /* against a drive, its velocity, not its nodes' */
-      S[d] += w * (g->sq[d][a] / ma - (drv ? s->bodies[s->fdriven[fb]].vdrive[d]
-                                           : g->sq[d][b] / mb));
     }
     if (cfg->gap_check && g->sext[a] + g->sext[b] > touch)
       touch = g->sext[a] + g->sext[b];
@@ -116,14 +112,11 @@ static int patch(sim *s, const int32_t *list, size_t len) {
   if (drv) {
     const body *bd = &s->bodies[s->fdriven[fb]];
     for (d = 0; d < DIM; d++) v[d] = bd->vdrive[d];
-    red = Ma;
-  } else {
+  } else
     for (d = 0; d < DIM; d++) v[d] = (Pa[d] + Pb[d]) / (Ma + Mb);
-    red = Ma * Mb / (Ma + Mb);
-  }
   for (d = 0; d < DIM; d++) {
     N[d] /= nn;
-    dp[d] = red * S[d] / W;
+    dp[d] = Pa[d] - Ma * v[d];
     dn += dp[d] * N[d];
     c[d] = cn[d] = ct[d] = 0;
   }

@@ -109,7 +109,7 @@ function M.discs(o)
   local meth, win = M.opts(o.method)
   local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / o.cells, ppc = 2,
     sides = "free", t_end = o.t_end or 3.0, shape = o.shape or "linear", normals = meth,
-    normal_window = win, contact_gap = o.gap, threads = o.threads}
+    normal_window = win, contact_gap = o.gap, threads = o.threads, body_contact = o.body_contact}
   local m = mvmpm.elastic {E = 1000, nu = 0.3, density = 1000}
   local a = sim:body {name = "lower", material = m, velocity = {0.1, 0.1},
     shape = mvmpm.disk {center = {0.2, 0.2}, radius = 0.2}}

@@ -52,7 +52,7 @@ function M.block(o)
   local sim = mvmpm.sim {
     domain = {x = {0, 1}, y = {0, 1}}, cell = L / o.k, ppc = 2, sides = "free",
     gravity = rot0 and {0, -1} or {math.sin(th), -math.cos(th)}, shape = o.shape or "linear",
-    t_end = T, normals = meth, normal_window = win, contact_gap = o.gap,
+    t_end = T, normals = meth, normal_window = win, contact_gap = o.gap, body_contact = o.body_contact,
     contact = {friction = o.mu}}
   local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}
   sim:body {name = "slope", material = m, driven = {0, 0},

@@ -53,7 +53,8 @@ static void node_recs(const sim *s, size_t k, rec *rc, size_t *nr) {
   int d;
   if (!(M > s->mcut)) return;
   for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
-    if (s->fdriven[g->sfield[sl]] >= 0) { drv = sl; break; }
+    /* a slot without mass is no partner, as in contact.c */
+    if (s->fdriven[g->sfield[sl]] >= 0 && g->sm[sl] > s->mcut) { drv = sl; break; }
   for (d = 0; d < DIM; d++)
     vref[d] = drv >= 0 ? s->bodies[s->fdriven[g->sfield[drv]]].vdrive[d]
                        : g->q[d][n] / M;
@@ -65,7 +66,7 @@ static void node_recs(const sim *s, size_t k, rec *rc, size_t *nr) {
     for (d = 0; d < DIM; d++)
       dn += (g->sq[d][sl] - mr * vref[d]) * g->sn[d][sl];
     for (q = g->head[n]; q >= 0; q = g->snext[q]) {
-      if (q == sl) continue;
+      if (q == sl || !(g->sm[q] > s->mcut)) continue;
       if (g->sext[q] > other) other = g->sext[q];
       if (g->sm[q] > mo) { mo = g->sm[q]; o = q; }
     }

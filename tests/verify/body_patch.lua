@@ -1,0 +1,166 @@
+-- Contact between bodies per contact patch (body_contact = "patch",
+-- src/core/contact_patch.c) against the node rule (contact.c, the
+-- default), on a disc meeting a driven (rigid, still) slab, the cases
+-- whose references are rigid-body mechanics:
+--   1. free fall beside the slab: nothing may act before the surfaces
+--      touch (a slot without mass is no partner);
+--   2. frictionless sliding along the slab: the speed is kept;
+--   3. thrown along the slab with mu = 0.3: friction takes the rigid
+--      disc's W = 1/2 m v0^2 I / (I + m R^2) (slide.lua's M.rigid) and
+--      the disc ends rolling;
+--   4. on an incline that is the slab (gravity rotated): rolling at
+--      25 deg, mu 0.5, a = 2/3 g sin th; sliding at 30 deg, mu 0.1,
+--      a = g (sin th - mu cos th), R alpha = 2 mu g cos th.
+-- Each at 8, 16 (and 32) cells per diameter, with the observed order.
+-- Printed, not asserted, where the patch rule is worse (docs/
+-- verification.md, "Contact between bodies per patch"): the head-on
+-- collision of two discs loses more energy, and a block with friction on
+-- a flat face rocks (a uniform velocity change cannot shift the pressure
+-- toward the leading edge).
+local V = require "mvmpm.verify"
+local S = require "mvmpm.slide"
+local I = require "mvmpm.incline"
+local C = require "mvmpm.normals"
+
+local flip = {shape = "linear", transfer = "flip", flip = 1}
+local function order(e, c)
+  return math.log(e[#e - 1] / e[#e]) / math.log(c[#c] / c[#c - 1])
+end
+
+V.case "free fall beside a driven slab: nothing acts before the surfaces touch"
+-- the disc starts one cell (at 8 cells) above the slab, moving along it
+-- at 1; it falls 0.045 by t = 0.3 and touches at t = 0.5
+for _, shape in ipairs {"linear", "gimp", "bspline2"} do
+  local r = S.run {cells = 8, y0 = 0.625, v0 = {1, 0}, mu = 0, T = 0.3, n = 3, slab = true,
+                   scheme = {shape = shape, transfer = "flip", flip = 1}}
+  V.near(shape .. ": vx at t = 0.3 (free flight)", r.d.vx, 1, 1e-9)
+  V.near(shape .. ": vy at t = 0.3 (free flight, -g t)", r.d.vy, -0.3, 1e-9)
+end
+
+V.case "frictionless disc thrown along a driven slab: the speed kept, 8 16 cells"
+for _, shape in ipairs {"linear", "gimp", "bspline2"} do
+  for _, rule in ipairs {"node", "patch"} do
+    for _, c in ipairs {8, 16} do
+      local r = S.run {cells = c, v0 = {1, 0}, mu = 0, T = 1, n = 10, slab = true, body_contact = rule,
+                       scheme = {shape = shape, transfer = "flip", flip = 1}}
+      local name = string.format("%s %s %d cells", shape, rule, c)
+      if rule == "patch" then
+        -- measured 0.9997-1.0000
+        V.near(name .. ": vx / v0 at t = 1", r.d.vx, 1, 0.003)
+        V.below(name .. ": |spin| at t = 1", math.abs(r.d.omega), 0.01)
+      else
+        -- measured 0.92-0.94 (linear, GIMP), 0.63-0.69 (B-splines): the
+        -- disc's normals at the nodes ahead of the contact point tilt
+        V.info(name .. ": vx / v0 at t = 1", r.d.vx)
+      end
+    end
+  end
+end
+
+V.case "disc thrown along a driven slab, mu 0.3: friction work against the rigid disc's"
+local function thrown(c, sc, rule)
+  local r = S.run {cells = c, scheme = sc, mu = 0.3, T = 2, n = 40, slab = true, body_contact = rule}
+  local e = r.e
+  return {w = e.dissipated / r.rigid, imp = e.impact / r.rigid,
+          roll = r.d.vx / (1 - 2 * r.rigid / r.m),
+          res = e.residual / (e.initial + e.boundary_work)}
+end
+for _, run in ipairs {
+  {name = "patch, linear FLIP", sc = flip, rule = "patch", cells = {8, 16, 32}},
+  {name = "patch, GIMP APIC", sc = {shape = "gimp", transfer = "apic"}, rule = "patch", cells = {8, 16}},
+  {name = "node, linear FLIP", sc = flip, rule = "node", cells = {8, 16}},
+} do
+  local err = {}
+  for i, c in ipairs(run.cells) do
+    local r = thrown(c, run.sc, run.rule)
+    local name = string.format("%s, %d cells", run.name, c)
+    err[i] = math.abs(r.w - 1)
+    V.info(name .. ": friction work / W", r.w)
+    V.info(name .. ": impact / W", r.imp)
+    V.info(name .. ": end speed / rolling speed", r.roll)
+    V.below(name .. ": |residual| / (E0 + W_b)", math.abs(r.res), 0.005)
+    if run.rule == "patch" then
+      -- measured: linear 1.069 / 1.010 / 0.997, GIMP APIC 1.034 / 1.009
+      if c == 16 then V.below(name .. ": |W / W_rigid - 1|", err[i], 0.02) end
+      if c == 32 then V.below(name .. ": |W / W_rigid - 1|", err[i], 0.01) end
+      -- the disc ends rolling (measured 0.93 / 0.98 / 0.995 linear)
+      if c >= 16 then V.near(name .. ": end speed / rolling speed", r.roll, 1, 0.03) end
+      -- the impacts book next to nothing (node rule: 0.15-0.31 W)
+      V.below(name .. ": |impact| / W", math.abs(r.imp), 0.02)
+    end
+  end
+  if run.rule == "patch" then
+    V.holds(run.name .. ": the error falls at each refinement", err[2] < err[1] and (not err[3] or err[3] < err[2]),
+            err[#err] / err[1])
+    V.info(run.name .. ": observed order", order(err, run.cells))
+  end
+end
+
+V.case "disc on an incline that is a driven slab: rolling (25 deg, mu 0.5) and sliding (30 deg, mu 0.1)"
+local g = 1
+for _, reg in ipairs {{deg = 25, mu = 0.5, roll = true}, {deg = 30, mu = 0.1}} do
+  local th = math.rad(reg.deg)
+  local aref = reg.roll and 2 / 3 * g * math.sin(th) or g * (math.sin(th) - reg.mu * math.cos(th))
+  local alref = reg.roll and aref / I.R or 2 * reg.mu * g * math.cos(th) / I.R
+  local kind = reg.roll and "rolling" or "sliding"
+  for _, rule in ipairs {"node", "patch"} do
+    local ea, eal, cs = {}, {}, rule == "patch" and {8, 16, 32} or {8, 16}
+    for i, c in ipairs(cs) do
+      local r = I.run {cells = c, deg = reg.deg, mu = reg.mu, slab = "driven", shape = "linear",
+                       body_contact = rule}
+      local name = string.format("%s, %s, %d cells", kind, rule, c)
+      ea[i], eal[i] = math.abs(r.a / aref - 1), math.abs(r.alpha / alref - 1)
+      V.info(name .. ": a / a_ref", r.a / aref)
+      V.info(name .. ": alpha / alpha_ref", r.alpha / alref)
+      V.below(name .. ": |residual| / E0", math.abs(r.e.residual / r.e.initial), 0.01)
+      if rule == "patch" then
+        V.below(name .. ": hop / R", r.hop / I.R, 0.01)
+        if reg.roll then
+          -- measured 0.932 / 0.982 / 0.985 (goal 2 % at 8 cells, 1 % at
+          -- 16: not met; the wall's patch rule gives 0.934 at 8)
+          if c >= 16 then V.below(name .. ": |a / a_ref - 1|", ea[i], 0.025) end
+        else
+          -- measured a 0.995 / 0.998 / 0.994, spin-up 0.83 / 0.965 / 1.010
+          V.below(name .. ": |a / a_ref - 1|", ea[i], 0.01)
+          if c >= 16 then V.below(name .. ": |spin-up / friction torque's - 1|", eal[i], 0.05) end
+        end
+      end
+    end
+    if rule == "patch" then
+      V.holds(kind .. ", patch: the acceleration's error falls 8 -> 16 cells", reg.roll and ea[2] < ea[1] or eal[2] < eal[1],
+              reg.roll and ea[2] or eal[2])
+    end
+  end
+end
+
+V.case "printed: where the patch rule is worse"
+-- Two discs colliding head on (Sulsky's geometry, mass normals, linear
+-- hats): measured total energy after over before, node 0.986 / 0.990 /
+-- 0.9996, patch 0.912 / 0.926 / 0.942 at 20 / 40 / 80 cells
+for _, rule in ipairs {"node", "patch"} do
+  for _, c in ipairs {20, 40} do
+    local r = C.discs {cells = c, offset = 0, method = "mass/0", body_contact = rule}
+    V.info(string.format("head-on, %s, %d cells: energy after / before", rule, c), r.total)
+  end
+end
+-- A block (8 cells per side) sliding with mu 0.2 on a driven flat body,
+-- gravity rotated 30 deg: measured a / a_ref node 0.999, patch 0.971,
+-- largest spin 0.04 and 0.54, friction work over Coulomb's 0.98 and 0.46
+-- (maxvolume/4 normals)
+for _, rule in ipairs {"node", "patch"} do
+  local r = C.block {k = 8, method = "maxvolume/4", mu = 0.2, body_contact = rule}
+  V.info(string.format("block, mu 0.2, %s: a / a_ref", rule), r.a)
+  V.info(string.format("block, mu 0.2, %s: largest spin", rule), r.spin)
+  V.info(string.format("block, mu 0.2, %s: friction work / Coulomb's", rule), r.friction)
+end
+
+V.case "the same numbers on 1 and 2 threads (the patch pass is serial)"
+do
+  local function once(threads)
+    local r = I.run {cells = 8, deg = 25, mu = 0.5, slab = "driven", body_contact = "patch", threads = threads}
+    return r.a, r.e.friction
+  end
+  local a1, f1 = once(1)
+  local a2, f2 = once(2)
+  V.holds("rolling on the slab: a and friction work bit for bit", a1 == a2 and f1 == f2, a2 - a1)
+end

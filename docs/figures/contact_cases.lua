@@ -19,6 +19,9 @@
 --                        (lua/mvmpm/slide.lua): |friction work / the
 --                        rigid disc's - 1| at 8, 16, 32 cells per
 --                        diameter, per wall rule and scheme
+--   contact_body_patch.png  the same disc on a driven slab (contact
+--                        between bodies): friction work, and rolling down
+--                        an incline that is the slab, per body_contact
 local mvmpm = require "mvmpm"
 local I = require "mvmpm.incline"
 local P = require "mvmpm.piston"
@@ -142,4 +145,29 @@ do
   mvmpm.plot {file = dir .. "/contact_friction_work.png", xlog = true, ylog = true,
               title = "Disc thrown along a floor (mu 0.3): friction work",
               xlabel = "cells per diameter", ylabel = "|W / W_rigid disc - 1|", series = series}
+end
+
+-- contact between bodies per rule (tests/verify/body_patch.lua): the disc
+-- thrown along a driven slab, friction work against the rigid disc's,
+-- and the disc rolling down an incline that is a driven slab
+do
+  local series = {}
+  for _, rule in ipairs {"node", "patch"} do
+    local x, yw, yr = {}, {}, {}
+    for _, c in ipairs {8, 16, 32} do
+      local r = S.run {cells = c, scheme = {shape = "linear", transfer = "flip", flip = 1}, mu = 0.3,
+                       T = 2, n = 40, slab = true, body_contact = rule}
+      local q = I.run {cells = c, deg = 25, mu = 0.5, slab = "driven", body_contact = rule}
+      local ar = 2 / 3 * math.sin(math.rad(25))
+      x[#x + 1] = c
+      yw[#yw + 1], yr[#yr + 1] = floor(math.abs(r.e.dissipated / r.rigid - 1)), floor(math.abs(q.a / ar - 1))
+      print(string.format("body_contact %-5s %2d cells: thrown W / W_rigid %.4f, rolling a/ref %.4f",
+                          rule, c, r.e.dissipated / r.rigid, q.a / ar))
+    end
+    series[#series + 1] = {x = x, y = yw, style = "both", label = "thrown: friction work, " .. rule}
+    series[#series + 1] = {x = x, y = yr, style = "both", label = "incline: rolling a, " .. rule}
+  end
+  mvmpm.plot {file = dir .. "/contact_body_patch.png", xlog = true, ylog = true,
+              title = "Disc on a driven slab (contact between bodies), linear hats",
+              xlabel = "cells per diameter", ylabel = "|measured / rigid disc's - 1|", series = series}
 end

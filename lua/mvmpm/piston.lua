@@ -43,7 +43,7 @@ end
 
 -- o: cells (per smallest diameter, 2 rmin), scheme {shape, transfer,
 -- flip}, mu, n (discs, 30), seed, v (piston speed, 0.5), T (4),
--- body_contact and wall_contact (the sim's);
+-- body_contact, wall_contact, normals, normal_window (the sim's);
 -- samples, sample: sample(energy, t) is called at T k / samples.
 -- Returns the energy table, the piston's work, the CPU time.
 function M.run(o)
@@ -55,6 +55,7 @@ function M.run(o)
     shape = sc.shape, transfer = sc.transfer, flip = sc.flip or 1, cfl = 0.25,
     t_end = T, sides = {left = wall, right = wall, bottom = wall, top = wall},
     contact = {friction = mu}, body_contact = o.body_contact, wall_contact = o.wall_contact,
+    normals = o.normals, normal_window = o.normal_window,
   }
   local m = mvmpm.elastic {K = 100, G = 50, density = 1}
   for _, g in ipairs(M.pack(o.n or 30, o.seed or 1)) do

@@ -31,15 +31,20 @@ B.line("ratio", "(c) t(1000 grains) / t(10 grains)", per[1000] / per[10], "",
 
 -- The cost of contact accuracy: the 1,000-grain bed with each way of
 -- taking the contact normals (sim.normals; "m/R": over a window of R
--- cells, sim.normal_window), as a ratio to the default ("mass").  The four scenes are stepped in turns (n steps of each per
+-- cells, sim.normal_window; "+patch": body_contact = "patch"), as a
+-- ratio to the default ("mass").  The four scenes are stepped in turns (n steps of each per
 -- round, the order rotated each round) so a neighbour's load falls on
 -- all of them; the ratio is the median of the rounds'.
 do
-  local opts = {"mass", "volume", "maxvolume", "plane", "maxvolume/4", "plane/4"}
+  -- "+patch": with contact between bodies per patch (body_contact)
+  local opts = {"mass", "volume", "maxvolume", "plane", "maxvolume/4", "plane/4", "mass+patch",
+                "maxvolume/4+patch"}
   local sims, per = {}, {}
   for k, o in ipairs(opts) do
-    local m, w = o:match("^(%a+)/(%d+)$")
-    sims[k] = packing(50, 20, {normals = m or o, normal_window = tonumber(w) or 0})
+    local base, patch = o:match("^([^+]+)(%+?p?a?t?c?h?)$")
+    local m, w = base:match("^(%a+)/(%d+)$")
+    sims[k] = packing(50, 20, {normals = m or base, normal_window = tonumber(w) or 0,
+                               body_contact = patch ~= "" and "patch" or nil})
     sims[k]:step(3)
     per[k] = {}
   end

@@ -60,6 +60,7 @@ local P = mvmpm.params {
   normal_window = 0,   -- ... from the shared nodes within this many cells
   contact_gap = "touch", -- or "step": contact judged at the step's end
   bond_release = "open", -- or "contact": how a released bond meets again
+  body_contact = "node", -- or "patch": bodies meet per contact patch
   -- heat (off by default: the scene is then the same, bit for bit).  SI.
   -- HMX: cv and k of PBX 9501's reactant in mvmpm.kinetics (996 J/(kg K),
   -- 0.452 W/(m K), from the Uintah input cited there); beta 0.9, the
@@ -127,7 +128,7 @@ local sim = mvmpm.sim {
   },
   contact = {friction = P.friction, bond = false},
   shape = P.shape, update = P.update, normals = P.normals, normal_window = P.normal_window,
-  contact_gap = P.contact_gap, bond_release = P.bond_release,
+  contact_gap = P.contact_gap, bond_release = P.bond_release, body_contact = P.body_contact,
 }
 
 local hot = P.heat == true or P.heat == "true"

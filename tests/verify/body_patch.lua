@@ -158,6 +158,43 @@ for _, shape in ipairs {"linear", "gimp", "bspline2"} do
   V.info(shape .. ": residual / E0", r.e.residual / r.e.initial)
 end
 
+V.case "3-D: a ball thrown along a driven slab, mu 0.3"
+-- the ball of tests/verify/friction_work.lua (R = 0.5, K = 400, G =
+-- 200) on a driven box 0.25 thick; the rigid ball's W from the seeded
+-- particles (slide.lua's M.rigid, about z).  Measured: patch 1.062 /
+-- 1.033 at 8 / 12 cells (the walls' patch rule 1.083 / 1.038), impacts
+-- 0.004 W; node by node 1.200 / 1.064 with another 0.17 / 0.24 W
+-- booked as impacts
+do
+  local mvmpm = require "mvmpm"
+  local function ball(c, rule)
+    local R, cell, H = 0.5, 1 / c, 0.25
+    local sim = mvmpm.sim {dim = 3, domain = {x = {0, 3}, y = {0, 2.25}, z = {0, 1.5}}, cell = cell,
+      ppc = 2, cfl = 0.25, t_end = 2, gravity = {0, -1, 0}, body_contact = rule, contact = {friction = 0.3},
+      sides = {left = "periodic", right = "periodic", bottom = {"wall", friction = 0}, top = "wall",
+               back = "wall", front = "wall"}}
+    sim:body {name = "slab", shape = mvmpm.box {lo = {0, 0, 0}, hi = {3, H, 1.5}},
+              material = mvmpm.elastic {K = 1000, G = 500, density = 1}, driven = {0, 0, 0}}
+    sim:body {shape = mvmpm.ball {center = {0.8, H + R, 0.75}, radius = R},
+              material = mvmpm.elastic {K = 400, G = 200, density = 1}, velocity = {1, 0, 0}}
+    local W = S.rigid(sim, 1, cell, 2, 2)
+    sim:run(2)
+    local e = sim:energy()
+    return e.dissipated / W, e.impact / W, e.residual / (e.initial + e.boundary_work)
+  end
+  local p8, i8, r8 = ball(8, "patch")
+  local p12, i12, r12 = ball(12, "patch")
+  local n8, j8 = ball(8, "node")
+  V.info("3-D patch, 8 cells: friction work / rigid ball's", p8)
+  V.info("3-D patch, 12 cells: friction work / rigid ball's", p12)
+  V.info("3-D node, 8 cells: friction work / rigid ball's", n8)
+  V.info("3-D node, 8 cells: impact / rigid ball's friction work", j8)
+  V.below("3-D patch: the error falls 8 -> 12 cells", math.abs(p12 - 1), math.abs(p8 - 1))
+  V.below("3-D patch, 12 cells: |W / W_rigid - 1|", math.abs(p12 - 1), 0.05)
+  V.below("3-D patch: |impact| / W at 8 and 12 cells", math.max(math.abs(i8), math.abs(i12)), 0.02)
+  V.below("3-D patch: |residual| / (E0 + W_b) at 8 and 12 cells", math.max(math.abs(r8), math.abs(r12)), 0.005)
+end
+
 V.case "printed: where the patch rule is worse"
 -- Two discs colliding head on (Sulsky's geometry, mass normals, linear
 -- hats): measured total energy after over before, node 0.986 / 0.990 /

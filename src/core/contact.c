@@ -659,7 +659,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
   if (rec) wk->cbody[k0] = -1;
   if (M <= s->mcut) return;
-  if (cfg->body_rule == BODY_PATCH && wk->cplab[n] >= 0) {
+  if (cfg->body_rule == BODY_PATCH && wk->cplab && wk->cplab[n] >= 0) {
     booked(s, k0, 0, 0, 0, 0, rec); /* contact_patch.c's */
     return;
   }
@@ -898,13 +898,14 @@ void contact_apply(sim *s) {
   s->ncut = 0;
   s->bond_area = 0;
   if (s->fbond >= 0 && cfg->bond_fit) par_run(wk->par, fits_part, s);
-  if (cfg->body_rule == BODY_PATCH) contact_patches(s);
+  /* the patches first (contact_patch.c; their room is contact_prepare's) */
+  if (cfg->body_rule == BODY_PATCH && wk->cplab) contact_patches(s);
   if (wk->cnodecap >= g->nshared) {
     par_run(wk->par, apply_part, s);
     apply_sums(s);
   } else
     for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);
   if (s->fbond >= 0) bond_sums(s);
-  if (cfg->body_rule == BODY_PATCH)
+  if (cfg->body_rule == BODY_PATCH && wk->cplab)
     for (k = 0; k < g->nshared; k++) wk->cplab[g->shared[k]] = -1;
 }

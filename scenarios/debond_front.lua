@@ -20,6 +20,7 @@ local P = mvmpm.params {
   traction = "mixture", -- the traction the bond test reads ("fit": fitted, averaged over bond_length)
   bond_length = 0,     -- with "fit": the length of interface it is averaged over
   shape = "linear",    -- shape functions ("linear", "gimp", "bspline2")
+  energy = 0,          -- fracture energy per area (the cohesive law; 0: brittle)
 }
 
 local sim = mvmpm.sim {
@@ -30,6 +31,7 @@ local sim = mvmpm.sim {
   shape = P.shape,
   bond_traction = P.traction,
   bond_length = P.bond_length,
+  bond_energy = P.energy,
 }
 local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
 -- each grip travels u = load strength / (K + 4G/3) with the speed

@@ -73,4 +73,7 @@ void book_finish(sim *s) {
   s->e.friction += half(g->nslot, g->sm, s->mcut, sv, g->sfi);
   s->e.impact += half(g->nslot, g->sm, s->mcut, sv, g->sni);
   if (s->fbond >= 0) s->e.bonding += half(g->nslot, g->sm, s->mcut, sv, g->sbi);
+  if (g->cohesive) {
+    s->e.cohesion += half(g->nslot, g->sm, s->mcut, sv, g->sci);
+  }
 }

@@ -52,8 +52,8 @@
 #define MAXSLOTS 64
 /* a node's record in a threaded pass: the driven body's force (DIM) and
 ** work, the friction work, the bonds cut (a count), the normal
-** impulses' loss and the bonded impulses' */
-#define CREC (DIM + 5)
+** impulses' loss, the bonded impulses' and the cohesive ones' */
+#define CREC (DIM + 6)
 
 /*
 ** The window.  A node's support sees a body's surface over one or two
@@ -561,17 +561,19 @@ double contact_lose(const grid *g, int32_t sl, const double vref[DIM],
 /* node k's friction work, bonds cut, normal and bonded impulses' loss:
 ** recorded (a threaded pass) or added now */
 static void booked(sim *s, size_t k, double fric, int cuts, double imp,
-                   double bnd, int rec) {
+                   double bnd, double coh, int rec) {
   sim_work *wk = &s->work;
   if (rec) {
     wk->crec[CREC * k + DIM + 1] = fric;
     wk->crec[CREC * k + DIM + 2] = cuts;
     wk->crec[CREC * k + DIM + 3] = imp;
     wk->crec[CREC * k + DIM + 4] = bnd;
+    wk->crec[CREC * k + DIM + 5] = coh;
   } else {
     s->e.friction += fric;
     s->e.impact += imp;
     s->e.bonding += bnd;
+    s->e.cohesion += coh;
     s->ncut += (size_t)cuts;
   }
 }
@@ -625,21 +627,71 @@ static double closing(const sim *s, int32_t sl, int32_t o, int odriven,
 ** bonded binder cell at 100 cells buried a grain's particle a cell deep
 ** in the binder at 72 and 86 % strain; with the bound, none).
 */
-static int opening(const sim *s, int32_t sl, int32_t o, double *gap) {
+static int apart(const sim *s, int32_t sl, int32_t o, double *gap, double *uu) {
   const grid *g = &s->g;
-  double u = 0, uu = 0;
+  double u = 0;
   int d;
   if (s->frel < 0 || o < 0 || s->fdriven[g->sfield[o]] >= 0 ||
       !(g->srm[sl] > s->mcut) || !(g->srm[o] > s->mcut))
     return 0;
+  *uu = 0;
   for (d = 0; d < DIM; d++) {
     double du = g->sru[d][sl] / g->srm[sl] - g->sru[d][o] / g->srm[o];
     u += du * g->sn[d][sl];
-    uu += du * du;
+    *uu += du * du;
   }
-  if (uu > g->h * g->h) return 0; /* moved apart a cell or more: the reach */
   *gap = -u;
   return 1;
+}
+
+static int opening(const sim *s, int32_t sl, int32_t o, double *gap) {
+  double uu;
+  /* moved apart a cell or more: the reach */
+  return apart(s, sl, o, gap, &uu) && !(uu > s->g.h * s->g.h);
+}
+
+/*
+** The cohesive law (sim.bond_energy = G_c > 0).  A strength criterion
+** alone has no energy: the cut node lets go at once, and how far and how
+** fast a debonding runs then depends on the cell (docs/verification.md,
+** debond front).  Here a cut interface keeps a normal traction that falls
+** linearly with the opening delta (apart() above, from the released
+** particles' displacements since the cut),
+**   t = sigma_c (1 - delta_max / delta_c),  delta_c = 2 G_c / sigma_c,
+** sigma_c the strength the two sides had at the cut (and the law's cap),
+** delta_max the largest opening the node has seen (the particles keep
+** it: damage does not heal), so that separating a unit area takes G_c
+** whatever the grid.  Below delta_max the traction is the secant
+** t delta / delta_max.  It only holds the sides back: the impulse
+** t A dt along r's normal is given while r moves away from its partner
+** (dn < 0) and never more than the -dn that would stop that motion (the
+** bonded limit, so the law cannot overshoot however small delta_max),
+** and closing sides get none (contact decides), so a reopening pays the
+** secant part again.  Returns the impulse along n_r, >= 0.
+*/
+static double cohere(const sim *s, int32_t sl, int32_t o, double dn) {
+  const grid *g = &s->g;
+  const pairlaw *l;
+  double sc, so, dm, dmo, dc, del, uu, t, cap;
+  if (!apart(s, sl, o, &del, &uu)) return 0;
+  sc = g->scs[sl] / g->srm[sl];
+  so = g->scs[o] / g->srm[o];
+  if (so < sc) sc = so;
+  l = sim_law_of(s, g->sfield[sl], g->sfield[o]);
+  cap = l ? l->bond : s->cfg.bond_default;
+  if (cap < sc) sc = cap;
+  dm = g->sdm[sl] / g->srm[sl];
+  dmo = g->sdm[o] / g->srm[o];
+  if (dmo > dm) dm = dmo;
+  if (del > dm) dm = del;
+  if (dm > g->sdn[sl]) g->sdn[sl] = dm;
+  if (!(sc > 0) || !(dn < 0)) return 0;
+  dc = 2 * s->cfg.bond_gc / sc;
+  if (!(dm < dc)) return 0;
+  t = sc * (1 - dm / dc);
+  if (del < dm) t *= del > 0 ? del / dm : 0;
+  t *= 0.5 * (area(g, sl) + area(g, o)) * s->dt;
+  return t < -dn ? t : -dn;
 }
 
 /* the correction at shared node k; rec: record the driven body's force
@@ -653,14 +705,15 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   /* each slot's correction, bonded (cb) and by contact (cc) */
   double cb[MAXSLOTS][DIM], cc[MAXSLOTS][DIM];
   double ct[MAXSLOTS][DIM]; /* the tangential part of cc: friction's */
-  double sb[DIM] = {0}, sc[DIM] = {0}, st[DIM] = {0}, vref[DIM], M = g->m[n];
-  double fric = 0, imp = 0, bnd = 0, cn[DIM];
+  double cq[MAXSLOTS][DIM]; /* the cohesive law's (cohere()) */
+  double sb[DIM] = {0}, sc[DIM] = {0}, st[DIM] = {0}, sq[DIM] = {0}, vref[DIM];
+  double M = g->m[n], fric = 0, imp = 0, bnd = 0, coh = 0, cn[DIM];
   int32_t sl, slots[MAXSLOTS], drv = -1;
-  int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0;
+  int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0, cohesive = s->fcoh >= 0;
   if (rec) wk->cbody[k0] = -1;
   if (M <= s->mcut) return;
   if (cfg->body_rule == BODY_PATCH && wk->cplab && wk->cplab[n] >= 0) {
-    booked(s, k0, 0, 0, 0, 0, rec); /* contact_patch.c's */
+    booked(s, k0, 0, 0, 0, 0, 0, rec); /* contact_patch.c's */
     return;
   }
   /* a field whose slot holds no mass (the edge of its particles'
@@ -686,7 +739,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     sl = slots[k];
     mr = g->sm[sl];
     for (d = 0; d < DIM; d++)
-      cb[k][d] = cc[k][d] = ct[k][d] = 0;
+      cb[k][d] = cc[k][d] = ct[k][d] = cq[k][d] = 0;
     if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || mr <= s->mcut) continue;
     for (d = 0; d < DIM; d++) {
       dp[d] = smom[d][sl] - mr * vref[d];
@@ -720,6 +773,13 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
         }
         g->sbonded[sl] = 1;
         continue;
+      }
+    }
+    if (cohesive) {
+      double J = cohere(s, sl, o, dn);
+      for (d = 0; d < DIM; d++) {
+        cq[k][d] = J * g->sn[d][sl];
+        sq[d] += cq[k][d];
       }
     }
     if (!(dn > 0)) continue;
@@ -784,7 +844,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       imp += contact_lose(g, sl, vref, cn, g->sni);
       if (bonds) bnd += contact_lose(g, sl, vref, cb[k], g->sbi);
     }
-    booked(s, k0, fric, cuts, imp, bnd, rec);
+    booked(s, k0, fric, cuts, imp, bnd, 0, rec);
     if (s->heat) heat_contact(s, slots, ns, drv, fric);
     return;
   }
@@ -802,8 +862,15 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
     fric += contact_lose(g, sl, vref, ct[k], g->sfi);
     imp += contact_lose(g, sl, vref, cn, g->sni);
     if (bonds) bnd += contact_lose(g, sl, vref, cb[k], g->sbi);
+    if (cohesive) {
+      for (d = 0; d < DIM; d++) {
+        cq[k][d] -= f * sq[d];
+        smom[d][sl] += cq[k][d];
+      }
+      coh += contact_lose(g, sl, vref, cq[k], g->sci);
+    }
   }
-  booked(s, k0, fric, cuts, imp, bnd, rec);
+  booked(s, k0, fric, cuts, imp, bnd, coh, rec);
   if (s->heat) heat_contact(s, slots, ns, -1, fric);
 }
 
@@ -862,6 +929,7 @@ static void apply_sums(sim *s) {
     s->ncut += (size_t)r[DIM + 2];
     s->e.impact += r[DIM + 3];
     s->e.bonding += r[DIM + 4];
+    s->e.cohesion += r[DIM + 5];
     if (wk->cbody[k] >= 0) {
       double *F = s->bodies[wk->cbody[k]].force;
       for (d = 0; d < DIM; d++) F[d] += r[d];

@@ -70,6 +70,8 @@ static void slots_free(grid *g) {
   free(g->sw);
   for (d = 0; d < DIM; d++) free(g->sx[d]);
   for (d = 0; d < DIM * (DIM + 1) / 2; d++) free(g->sxx[d]);
+  free(g->scs); free(g->sdm); free(g->sdn);
+  for (d = 0; d < DIM; d++) free(g->sci[d]);
   for (d = 0; d < DIM; d++) {
     free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
     free(g->sg[d]); free(g->sn[d]);
@@ -93,7 +95,8 @@ size_t grid_mem(const grid *g) {
   size_t dense = g->nnodes * ((1 + 5 * DIM) * sizeof(double) + 2 * sizeof(int32_t));
   size_t slot = g->slotcap * (3 * sizeof(int32_t) + (2 + 7 * DIM) * sizeof(double));
   size_t mom = g->momcap * (1 + DIM + DIM * (DIM + 1) / 2) * sizeof(double);
-  return dense + slot + mom + g->sharedcap * sizeof(int32_t);
+  size_t coh = g->cohcap * (3 + DIM) * sizeof(double);
+  return dense + slot + mom + coh + g->sharedcap * sizeof(int32_t);
 }
 
 void grid_clear(grid *g, size_t i0, size_t i1, int clear_q) {
@@ -168,10 +171,22 @@ static int moments_grow(grid *g) {
   return 0;
 }
 
+/* the cohesive law's arrays, likewise */
+static int cohesion_grow(grid *g) {
+  size_t cap = g->slotcap;
+  int d;
+  GROW(g->scs, double, cap); GROW(g->sdm, double, cap);
+  GROW(g->sdn, double, cap);
+  for (d = 0; d < DIM; d++) GROW(g->sci[d], double, cap);
+  g->cohcap = cap;
+  return 0;
+}
+
 int grid_slots_reserve(grid *g, size_t nslot, size_t nshared) {
   while (g->slotcap < nslot)
     if (slots_grow(g)) return -1;
   if (g->moments && g->momcap < g->slotcap && moments_grow(g)) return -1;
+  if (g->cohesive && g->cohcap < g->slotcap && cohesion_grow(g)) return -1;
   if (g->sharedcap < nshared) {
     size_t cap = g->sharedcap ? 2 * g->sharedcap : 1024;
     while (cap < nshared) cap *= 2;
@@ -211,5 +226,11 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
     memset(g->sw + s0, 0, n);
     for (d = 0; d < DIM; d++) memset(g->sx[d] + s0, 0, n);
     for (d = 0; d < DIM * (DIM + 1) / 2; d++) memset(g->sxx[d] + s0, 0, n);
+  }
+  if (g->cohesive) {
+    memset(g->scs + s0, 0, n);
+    memset(g->sdm + s0, 0, n);
+    memset(g->sdn + s0, 0, n);
+    for (d = 0; d < DIM; d++) memset(g->sci[d] + s0, 0, n);
   }
 }

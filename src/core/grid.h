@@ -74,6 +74,14 @@ typedef struct grid {
   int moments;
   size_t momcap;
   double *sw, *sx[DIM], *sxx[DIM * (DIM + 1) / 2];
+  /* the cohesive law (bond.c, contact.c; sim.bond_energy > 0), kept only
+  ** while cohesive is set: over the released particles, sum_p m_p S_ip
+  ** times their strength at the cut and times the largest opening their
+  ** node has seen; the largest opening this step (written by contact,
+  ** read back by bond_scatter); the cohesive impulses (book.c) */
+  int cohesive;
+  size_t cohcap;
+  double *scs, *sdm, *sdn, *sci[DIM];
   /* list of shared nodes */
   size_t nshared, sharedcap;
   int32_t *shared;

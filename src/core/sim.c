@@ -32,6 +32,8 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->t_stop = INFINITY;
   s->fbond = -1;
   s->frel = -1;
+  s->fcoh = -1;
+  s->fopen = -1;
   s->cfg.mcut_rel = 1e-9;
   s->cfg.sort_every = 20;
   s->cfg.ppc = ppc;
@@ -307,6 +309,13 @@ int sim_enable_bonds(sim *s) {
   if (s->fbond >= 0 && s->frel < 0)
     s->frel = particles_add_field(&s->ps, "release", DIM + 1, PF_DOUBLE, "L",
                                   PF_RESTART);
+  if (s->frel >= 0 && s->cfg.bond_gc > 0 && s->fcoh < 0) {
+    s->fcoh = particles_add_field(&s->ps, "cut_strength", 1, PF_DOUBLE,
+                                  "M/(L T^2)", PF_OUTPUT | PF_RESTART);
+    s->fopen = particles_add_field(&s->ps, "opening", 1, PF_DOUBLE, "L",
+                                   PF_OUTPUT | PF_RESTART);
+    if (s->fcoh < 0 || s->fopen < 0) return -1;
+  }
   if (s->frel >= 0 && s->cfg.bond_fit && !s->work.bfit) { /* only for bond_traction = "fit" */
     s->work.bfit = malloc(BF_N * s->g.nnodes * sizeof *s->work.bfit);
     s->work.bffield = malloc(s->g.nnodes * sizeof *s->work.bffield);
@@ -404,7 +413,7 @@ double sim_residual(const sim *s) {
   const sim_energy *e = &s->e;
   return e->initial + e->boundary + e->thermal - e->friction - e->plastic -
          e->viscous - e->settled - e->transfer - e->impact - e->bonding -
-         sim_total(s);
+         e->cohesion - sim_total(s);
 }
 
 double sim_scale(const sim *s) {
@@ -579,6 +588,7 @@ int sim_step(sim *s) {
   grid_reset_slots(&s->g);
   p2g_plan(s);
   s->g.moments = cfg->normals == NORMALS_PLANE;
+  s->g.cohesive = s->fcoh >= 0;
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "out of memory for shared nodes");
     return -1;
@@ -594,7 +604,7 @@ int sim_step(sim *s) {
   forces_clear(s);
   if (s->g.nshared && s->fbond >= 0) bond_gather(s);
   if (s->g.nshared) contact_apply(s);
-  if (s->ncut) {
+  if (s->ncut || (s->fcoh >= 0 && s->g.nshared)) {
     bond_scatter(s);
     s->ncut_total += s->ncut;
   }

@@ -114,6 +114,9 @@ typedef struct sim_energy {
                      ** the bonded fields one velocity (inelastic at the
                      ** node) less the stress work bond_remap adds
                      ** (contact.c, bond.c) */
+  double cohesion;   /* the work of separation: what the cohesive law's
+                     ** impulses took from cut interfaces opening
+                     ** (sim.bond_energy > 0; contact.c cohere()) */
   /* heat (heat.h), in scenes with heat only: what the sources put into
   ** the particles (friction, beta x plastic, viscous, heat_add's), what
   ** wall friction gave the walls, the cold work (1 - beta) x plastic,
@@ -151,6 +154,9 @@ typedef struct sim_cfg {
   int release;       /* enum release_kind: contact across a released bond */
   int bond_fit;      /* bond traction from the sides' fitted profiles */
   double bond_length; /* ... averaged over this length along the interface */
+  double bond_gc;    /* > 0: a cut interface holds a cohesive traction that
+                     ** falls with the opening and gives out once this
+                     ** energy per area is spent (contact.c); 0: brittle */
   int gap_check;     /* contact only once material surfaces meet */
   int gap_step;      /* ... judged at the step's end (contact.c closing) */
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
@@ -242,6 +248,10 @@ typedef struct sim {
   int nlaw, lawcap;
   unsigned char *flaw; /* per field: 1 if some override names it */
   int fbond;         /* particle field "bond" (strength), -1: no bonds */
+  int fcoh, fopen;   /* particle fields "cut_strength" and "opening"
+                        (bond_gc > 0): the strength the particle's bond had
+                        when cut, the largest opening its node has seen
+                        since (bond.c); -1 without */
   int frel;          /* particle field "release": 1 once the particle's bond
                         was cut, then its position then (bond.c) */
   size_t ncut;       /* interface slots debonded in the last step */
@@ -315,6 +325,10 @@ const char *sim_advice(const sim *s);
 /* a warning when a wall with friction acts by the node rule, under which
 ** friction hardly turns a round body (docs/verification.md), or NULL */
 const char *sim_wall_advice(const sim *s);
+/* the cohesive law's limit (bond.c): 0, or -1 with s->err saying why,
+** where the weakest bond's opening at failure 2 G_c / sigma passes half a
+** cell, beyond which the sides stop sharing nodes before it gives out */
+int sim_cohesion_check(sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
 /* total energy, kinetic + strain + lag.  Velocities and stresses are a

@@ -232,6 +232,7 @@ static void visit_sim(ckv *v, sim *s) {
   vreal_opt(v, "e.transfer", &e->transfer, 0);
   vreal_opt(v, "e.impact", &e->impact, 0);
   vreal_opt(v, "e.bonding", &e->bonding, 0);
+  vreal_opt(v, "e.cohesion", &e->cohesion, 0);
   vreal(v, "e.initial", &e->initial);
   /* newer than the format: a checkpoint without them settled nothing,
   ** and its potential's start is taken as where it was then */

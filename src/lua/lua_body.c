@@ -414,6 +414,7 @@ int lbody_new(lua_State *L) {
   lua_pop(L, 1);
   exact = chk_option(L, 2, "body", "volume", 0, vols);
   bond = chk_num(L, 2, "body", "bond", 0, 0, HUGE_VAL, 0);
+  lsim_check_cohesion(L, s, bond, "body", "bond");
   skip = chk_option(L, 2, "body", "overlap", 0, ovl);
   occ_init(L, ls);
   /* seed */

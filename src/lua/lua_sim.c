@@ -170,13 +170,28 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
   lua_pop(L, 1);
 }
 
+void lsim_check_cohesion(lua_State *L, const sim *s, double strength,
+                         const char *what, const char *field) {
+  double gc = s->cfg.bond_gc, dc;
+  if (!(gc > 0) || !(strength > 0) || !isfinite(strength)) return;
+  dc = 2 * gc / strength;
+  if (dc > 0.5 * s->g.h)
+    chk_error(L, "%s: field '%s' = %g with sim.bond_energy = %g opens the "
+                 "interface by 2 G/strength = %g before it gives out, more "
+                 "than half a cell (%g), where the sides stop sharing nodes; "
+                 "allowed: %s >= %g at this cell and energy", what, field,
+              strength, gc, dc, 0.5 * s->g.h, field, 4 * gc / s->g.h);
+}
+
 /* bond = true | false | strength cap (>= 0) */
-static double bondcap(lua_State *L, int idx, const char *what, double def) {
+static double bondcap(lua_State *L, const sim *s, int idx, const char *what,
+                      double def) {
   double b;
   lua_getfield(L, idx, "bond");
   if (lua_isboolean(L, -1)) b = lua_toboolean(L, -1) ? INFINITY : 0;
   else b = chk_num(L, idx, what, "bond", def, 0, HUGE_VAL, 0);
   lua_pop(L, 1);
+  lsim_check_cohesion(L, s, b, what, "bond");
   return b;
 }
 
@@ -256,7 +271,8 @@ int lsim_new(lua_State *L) {
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
       "wall_remap", "wall_contact", "body_contact", "normals", "normal_window", "contact_gap",
-      "xpic", "bond_release", "bond_traction", "bond_length", "dim", NULL};
+      "xpic", "bond_release", "bond_traction", "bond_length", "bond_energy", "dim",
+      NULL};
   static const char *const updates[] = {"usl", "musl", "usavg", NULL};
   static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
@@ -427,6 +443,16 @@ int lsim_new(lua_State *L) {
     s->cfg.release = chk_option(L, 1, what, "bond_release", RELEASE_OPEN, releaseopt);
     s->cfg.bond_fit = chk_option(L, 1, what, "bond_traction", 0, tractionopt);
     s->cfg.bond_length = chk_num(L, 1, what, "bond_length", 0, 0, HUGE_VAL, 0);
+    s->cfg.bond_gc = chk_num(L, 1, what, "bond_energy", 0, 0, HUGE_VAL, 0);
+    /* GIMP's volume gradient at the shared node shrinks as the sides
+    ** part (a particle three quarters of a cell from it sits where its
+    ** weight's slope starts to fall): the work of separation came out
+    ** 0.98 / 0.95 / 0.87 of G_c at 16 / 32 / 64 cells (docs/verification.md,
+    ** the cohesive law) */
+    if (s->cfg.bond_gc > 0 && s->cfg.shape == SHAPE_GIMP)
+      chk_error(L, "%s: field 'bond_energy' needs shape = \"linear\" or "
+                   "\"bspline2\" (under GIMP the cohesive law loses work of "
+                   "separation as the grid is refined)", what);
     s->cfg.normal_window = (int)chk_num(L, 1, what, "normal_window", s->cfg.normal_window,
                                     0, NORMAL_WINDOW_MAX, CHK_INT);
     lua_getfield(L, 1, "units");
@@ -441,7 +467,7 @@ int lsim_new(lua_State *L) {
       chk_keys(L, ci, "sim.contact", ck);
       s->cfg.mu_default = friction(L, ci, "sim.contact", 0);
       s->cfg.gap_check = chk_bool(L, ci, "sim.contact", "separation", 1);
-      s->cfg.bond_default = bondcap(L, ci, "sim.contact", INFINITY);
+      s->cfg.bond_default = bondcap(L, s, ci, "sim.contact", INFINITY);
     }
     lua_pop(L, 1);
     lua_pushvalue(L, simidx);
@@ -491,7 +517,7 @@ static int lcontact(lua_State *L) {
     chk_keys(L, 2, "contact", ck);
     ls->s.cfg.mu_default = friction(L, 2, "contact", ls->s.cfg.mu_default);
     ls->s.cfg.gap_check = chk_bool(L, 2, "contact", "separation", ls->s.cfg.gap_check);
-    ls->s.cfg.bond_default = bondcap(L, 2, "contact", ls->s.cfg.bond_default);
+    ls->s.cfg.bond_default = bondcap(L, &ls->s, 2, "contact", ls->s.cfg.bond_default);
     return 0;
   } else {
     lbody *a = lbody_check(L, 2, ls, "contact");
@@ -506,7 +532,7 @@ static int lcontact(lua_State *L) {
                  ls->s.bodies[a->idx].name, ls->s.bodies[b->idx].name);
     mu = friction(L, 4, "contact", ls->s.cfg.mu_default);
     if (sim_set_law(&ls->s, fa, fb, mu,
-                    bondcap(L, 4, "contact", ls->s.cfg.bond_default)))
+                    bondcap(L, &ls->s, 4, "contact", ls->s.cfg.bond_default)))
       luaL_error(L, "contact: out of memory");
     return 0;
   }
@@ -745,6 +771,7 @@ static int lenergy(lua_State *L) {
   setnum(L, "transfer", s->e.transfer);
   setnum(L, "impact", s->e.impact);
   setnum(L, "bonding", s->e.bonding);
+  setnum(L, "cohesion", s->e.cohesion);
   setnum(L, "numerical", s->e.transfer + s->e.impact + s->e.bonding);
   setnum(L, "initial", s->e.initial);
   setnum(L, "scale", sim_scale(s));

@@ -114,7 +114,7 @@ int run_claim_outdir(const char *dir, int overwrite, char *err,
 /* every term of the budget (docs/algorithm.md) is a column: total =
 ** kinetic + strain + potential + lag, residual = initial + boundary_work
 ** + thermal_work - dissipated - plastic - viscous - settled - transfer
-** - impact - bonding - total, and
+** - impact - bonding - cohesion - total, and
 ** scale (sim_scale) the size it is measured against */
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
@@ -125,6 +125,8 @@ static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     ** of sim:output{hotspots =} (react.h, lua_hotspot.c) */
     "chemical", "reacted", "ignition_time", "hotspots",
     "hotspot_area_fraction",
+    /* the cohesive law's work of separation (sim.bond_energy) */
+    "cohesion",
     /* scenes with heat only (heat.h): the heat the sources put in, what
     ** walls and held bodies exchanged, the thermal energy the particles
     ** hold, and the two residuals */
@@ -169,12 +171,13 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[28] = s->e.chemical; v[29] = react_mean(s);
   v[30] = s->t_ignition < INFINITY ? s->t_ignition : -1;
   lsim_hotspot_row(L, ls, &v[31], &v[32]);
+  v[33] = s->e.cohesion;
   if (s->heat) {
-    v[33] = s->e.heat_friction; v[34] = s->e.heat_plastic;
-    v[35] = s->e.heat_viscous; v[36] = s->e.heat_source;
-    v[37] = s->e.heat_wall; v[38] = s->e.cold; v[39] = s->e.heat_boundary;
-    v[40] = s->e.heat_thermal; v[41] = sim_heat_residual(s);
-    v[42] = sim_residual_all(s);
+    v[34] = s->e.heat_friction; v[35] = s->e.heat_plastic;
+    v[36] = s->e.heat_viscous; v[37] = s->e.heat_source;
+    v[38] = s->e.heat_wall; v[39] = s->e.cold; v[40] = s->e.heat_boundary;
+    v[41] = s->e.heat_thermal; v[42] = sim_heat_residual(s);
+    v[43] = sim_residual_all(s);
   }
   if (NCOLS_3D) { /* the 3-D columns go before the heat's */
     double w[NCOLS_ALL + 3];
@@ -642,6 +645,7 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     warn_once(ls, &printed, sim_advice(s));
     warn_once(ls, &wprinted, sim_wall_advice(s));
   }
+  if (sim_cohesion_check(s)) luaL_error(L, "%s", s->err);
   if (isfinite(t_end)) run_check(L, simidx, ls, t_end);
   out_start(L, ls);
   pl.next_t = t0 + 0.1 * (t_end - t0);

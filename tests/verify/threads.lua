@@ -66,3 +66,8 @@ same("frictional grains pressed by a driven plate, walls, gravity",
 -- the threaded contact pass, strengths gathered and scattered by threads
 same("bonds cut: concentric cylinders cooled fast", "scenarios/concentric_debond.lua",
   {rate = 0.02}, 60)
+-- the cohesive law mid-softening (8 nodes cut, about half the work of
+-- separation spent): the openings' memory written by the threaded
+-- contact pass and read back per particle
+same("the cohesive law: bond_pull softening", "scenarios/bond_pull.lua",
+  {cells = 16, strength = 5e-4, energy = 5e-6}, 400)

@@ -19,22 +19,29 @@ local P = mvmpm.params {
   energy = 0,          -- fracture energy per area of the A-B interface
   shape = "linear",
   shift = 0,           -- the bodies moved along x by this fraction of a cell
+  dim = 2,             -- 3: the same blocks 0.25 deep, periodic back and front
   t_end = 12,
 }
 
+local d3 = P.dim == 3
 local sim = mvmpm.sim {
-  domain = {x = {0, 3}, y = {0, 0.5}},
+  dim = P.dim,
+  domain = {x = {0, 3}, y = {0, 0.5}, z = d3 and {0, 0.25} or nil},
   cell = 1 / P.cells,
   shape = P.shape,
   bond_energy = P.energy,
   t_end = P.t_end,
-  sides = {left = "free", right = "free", bottom = "periodic", top = "periodic"},
+  sides = {left = "free", right = "free", bottom = "periodic", top = "periodic",
+           back = d3 and "periodic" or nil, front = d3 and "periodic" or nil},
 }
 local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
 local dx = P.shift / P.cells
-local function block(lo, hi) return mvmpm.rect {lo = {lo + dx, 0}, hi = {hi + dx, 0.5}} end
+local function block(lo, hi)
+  if d3 then return mvmpm.rect {lo = {lo + dx, 0, 0}, hi = {hi + dx, 0.5, 0.25}} end
+  return mvmpm.rect {lo = {lo + dx, 0}, hi = {hi + dx, 0.5}}
+end
 local function grip(sign)
-  return function(t) return sign * P.V0 * math.min(1, t / P.ramp), 0 end
+  return function(t) return sign * P.V0 * math.min(1, t / P.ramp), 0, 0 end
 end
 -- the blocks carry a strong bond (1) to their grips; the A-B pair's law
 -- caps their interface at the strength under study

@@ -36,7 +36,8 @@ function P.tref(u, gc)
   return math.max(0, P.sigma * (1 - 2 * u / dc) / (1 - 2 * P.sigma / (P.M * dc)))
 end
 
--- o: cells, shape, energy (default P.gc), run (a study's clock.run).
+-- o: cells, shape, energy (default P.gc), dim (3: the blocks 0.25 deep,
+-- the area 0.125), run (a study's clock.run).
 -- Returns w (work of separation / G_c A), curve (mean |grip traction -
 -- quasi-static| / sigma over 12 windows, each a tenth of the softening's
 -- time, from the peak, u = sigma L / M, to past its end, 2u = delta_c),
@@ -53,14 +54,15 @@ function P.run(o)
   local t2 = P.dc / 2 / P.V0 + P.T / 2
   local w, tend = (t2 - t1) / 10, t2 + 0.5 * (t2 - t1)
   local sim = mvmpm.load("scenarios/bond_pull.lua", {strength = P.sigma, energy = gc,
-    cells = o.cells, shape = o.shape, V0 = P.V0, shift = 0.3, t_end = tend})
+    cells = o.cells, shape = o.shape, V0 = P.V0, shift = 0.3, t_end = tend, dim = o.dim})
+  local area = P.area * (o.dim == 3 and 0.25 or 1)
   local run = o.run or function(s, t) s:run(t) end
   local grip
   for _, b in ipairs(sim:bodies()) do if b.name == "gripR" then grip = b end end
   local sum, k, late, nl, bad, first = 0, 0, 0, 0, false, nil
   local tlate = tend - 0.2 * (tend - t2 - w)
   sim:every {steps = 1, fn = function(s)
-    local tr = grip:force() / P.area
+    local tr = grip:force() / area
     sum, k = sum + tr, k + 1
     if s.t > tlate then late, nl = late + tr, nl + 1 end
     local e = s:energy()
@@ -84,7 +86,7 @@ function P.run(o)
     if body[i] == 2 then amax = math.max(amax, x.x[i])
     elseif body[i] == 3 then bmin = math.min(bmin, x.x[i]) end
   end
-  return {w = gc > 0 and e.cohesion / (gc * P.area) or e.cohesion, curve = err / n,
+  return {w = gc > 0 and e.cohesion / (gc * area) or e.cohesion, curve = err / n,
           res = e.residual / e.boundary_work, late = math.abs(late / nl) / P.sigma,
           gap = (bmin - amax) * o.cells - 0.5, onset = first, bad = bad,
           us = us, ts = ts, sim = sim}

@@ -7,7 +7,8 @@
 --     the work of separation booked against G_c times the area, the
 --     grip's traction against the quasi-static curve, the first cut
 --     against the strength, the budget, no burial, no NaN.
--- (b) the same with quadratic B-splines.
+-- (b) the same with quadratic B-splines, and in 3-D (uniaxial strain:
+--     the 2-D run's numbers).
 -- (c) a running debond front (scenarios/debond_front.lua, 24 cells): a
 --     fracture energy is a toughness, so the front must run slower than
 --     the brittle bond's and never faster than the Rayleigh wave.
@@ -20,6 +21,7 @@ local P = require "mvmpm.pull"
 
 local function order(e1, e2, c1, c2) return math.log(e1 / e2) / math.log(c2 / c1) end
 
+local lin12
 for _, shape in ipairs {"linear", "bspline2"} do
   local cells = {12, 16, 24}
   V.case(string.format("pull apart, %s: sigma %g, delta_c %g, G_c %g", shape, P.sigma, P.dc, P.gc))
@@ -27,6 +29,7 @@ for _, shape in ipairs {"linear", "bspline2"} do
   for i, c in ipairs(cells) do
     local c0 = os.clock()
     r[i] = P.run {cells = c, shape = shape}
+    if shape == "linear" and c == 12 then lin12 = r[i] end
     local tag = string.format("%s, %d cells", shape, c)
     V.near(tag .. ": work of separation / (G_c A)", r[i].w, 1, 0.03)
     V.near(tag .. ": grip travel at the first cut / (sigma L / M)", r[i].onset, 1, 0.05)
@@ -50,6 +53,14 @@ for _, shape in ipairs {"linear", "bspline2"} do
   V.info(shape .. ": observed order of the first cut's error, " .. cells[1] .. "->" .. cells[3],
          order(f[1], f[3], cells[1], cells[3]))
 end
+
+V.case "the same pull in 3-D (the blocks 0.25 deep, periodic back and front), 12 cells"
+local r3 = P.run {cells = 12, dim = 3}
+V.near("3-D: work of separation / the 2-D run's", r3.w / lin12.w, 1, 1e-6)
+V.near("3-D: traction error / the 2-D run's", r3.curve / lin12.curve, 1, 1e-6)
+V.near("3-D: first cut / the 2-D run's", r3.onset / lin12.onset, 1, 1e-9)
+V.below("3-D: |residual| / work put in", math.abs(r3.res), 0.01)
+V.above("3-D: gap between the blocks / cell at the end", r3.gap, 0)
 
 V.case "brittle (bond_energy = 0): nothing booked as cohesion"
 local b = P.run {cells = 16, energy = 0}

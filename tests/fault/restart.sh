@@ -7,6 +7,7 @@
 # snapshot given as a checkpoint, a damaged file).
 source "$(dirname "$0")/lib.sh" restart "$1"
 scene=$PWD/tests/fault/pieces.lua
+pull=$PWD/scenarios/bond_pull.lua
 cd "$tmp"
 
 "$bin" run "$scene" --out full --set dump=true --checkpoint-every 0.15 --quiet
@@ -89,4 +90,18 @@ LUA
 "$bin" run badstate.lua --out bs --checkpoint-every 0.01 --quiet >out.txt 2>&1
 [ $? -eq 1 ] && has out.txt "state.a[3].fn is a function"
 ok $? "a function in sim:state is refused by its place" "$(head -1 out.txt)"
+
+# the cohesive law's memory (the particles' cut strength and largest
+# opening) is in the checkpoint: continued from t = 24, halfway through
+# the interface's softening (t = 19 .. 29), the run is the uninterrupted one
+set_coh="--set strength=0.005 --set energy=2.5e-5 --set V0=0.0002 --set t_end=30"
+"$bin" run "$pull" --out cfull $set_coh --checkpoint-every 8 --quiet >/dev/null 2>&1
+ok $? "cohesive pull with checkpoints"
+mkdir cpiece && cp cfull/checkpoint_000003.h5 cfull/particles.xmf cpiece/ &&
+  head -n "$(awk -F, '$2 != "" && $1 ~ /^[0-9]+$/ && $2 + 0 <= 24.0000001 {n = NR} END {print n}' cfull/diagnostics.csv)" \
+    cfull/diagnostics.csv >cpiece/diagnostics.csv.part
+"$bin" run --restart cpiece/checkpoint_000003.h5 --quiet >/dev/null 2>&1
+ok $? "restart mid-softening"
+cmp -s cfull/diagnostics.csv cpiece/diagnostics.csv
+ok $? "the diagnostics (the work of separation among them) are the same" "$(tail -1 cfull/diagnostics.csv | cut -c1-40)"
 finish

@@ -47,6 +47,8 @@ local P = mvmpm.params {
   binder = true,       -- false: dry grains only
   binder_set = "placeholder", -- or "composite"
   bond = 5e6,          -- grain-binder bond strength, Pa (0: no bonds)
+  bond_energy = 0,     -- grain-binder fracture energy, J/m^2 (0: brittle; the
+                       -- cohesive law, at most bond x cell / 4)
   friction = 0.3,      -- Coulomb friction between grains, and grain-binder once debonded
   rate = 1e5,          -- nominal shear strain rate (v_right - v_left) / width, 1/s
   strain = 1.0,        -- nominal shear strain to reach
@@ -129,6 +131,7 @@ local sim = mvmpm.sim {
   contact = {friction = P.friction, bond = false},
   shape = P.shape, update = P.update, normals = P.normals, normal_window = P.normal_window,
   contact_gap = P.contact_gap, bond_release = P.bond_release, body_contact = P.body_contact,
+  bond_energy = P.bond_energy,
 }
 
 local hot = P.heat == true or P.heat == "true"

@@ -18,6 +18,7 @@ local P = mvmpm.params {
   cells = 16,          -- cells per unit length
   energy = 0,          -- fracture energy per area of the A-B interface
   shape = "linear",
+  transfer = "flip",   -- or "apic", "xpic"
   shift = 0,           -- the bodies moved along x by this fraction of a cell
   dim = 2,             -- 3: the same blocks 0.25 deep, periodic back and front
   t_end = 12,
@@ -29,6 +30,7 @@ local sim = mvmpm.sim {
   domain = {x = {0, 3}, y = {0, 0.5}, z = d3 and {0, 0.25} or nil},
   cell = 1 / P.cells,
   shape = P.shape,
+  transfer = P.transfer,
   bond_energy = P.energy,
   t_end = P.t_end,
   sides = {left = "free", right = "free", bottom = "periodic", top = "periodic",

@@ -36,7 +36,7 @@ function P.tref(u, gc)
   return math.max(0, P.sigma * (1 - 2 * u / dc) / (1 - 2 * P.sigma / (P.M * dc)))
 end
 
--- o: cells, shape, energy (default P.gc), dim (3: the blocks 0.25 deep,
+-- o: cells, shape, transfer, energy (default P.gc), dim (3: the blocks 0.25 deep,
 -- the area 0.125), run (a study's clock.run).
 -- Returns w (work of separation / G_c A), curve (mean |grip traction -
 -- quasi-static| / sigma over 12 windows, each a tenth of the softening's
@@ -54,7 +54,7 @@ function P.run(o)
   local t2 = P.dc / 2 / P.V0 + P.T / 2
   local w, tend = (t2 - t1) / 10, t2 + 0.5 * (t2 - t1)
   local sim = mvmpm.load("scenarios/bond_pull.lua", {strength = P.sigma, energy = gc,
-    cells = o.cells, shape = o.shape, V0 = P.V0, shift = 0.3, t_end = tend, dim = o.dim})
+    cells = o.cells, shape = o.shape, transfer = o.transfer, V0 = P.V0, shift = 0.3, t_end = tend, dim = o.dim})
   local area = P.area * (o.dim == 3 and 0.25 or 1)
   local run = o.run or function(s, t) s:run(t) end
   local grip

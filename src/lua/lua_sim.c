@@ -1006,6 +1006,7 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->cfg.flip);
   else if (strcmp(k, "cfl") == 0) lua_pushnumber(L, s->cfg.cfl);
   else if (strcmp(k, "friction") == 0) lua_pushnumber(L, s->cfg.mu_default);
+  else if (strcmp(k, "bond_energy") == 0) lua_pushnumber(L, s->cfg.bond_gc);
   else if (strcmp(k, "removed") == 0) lua_pushinteger(L, (lua_Integer)s->nremoved);
   else if (strcmp(k, "threads") == 0) lua_pushinteger(L, s->cfg.threads);
   else if (strcmp(k, "shared_nodes") == 0) lua_pushinteger(L, (lua_Integer)s->g.nshared);
@@ -1039,7 +1040,7 @@ static int lindex(lua_State *L) {
   else {
     static const char *const fields[] = {
         "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "wall_advice", "cell",
-        "dim", "flip", "cfl", "friction", "removed", "threads", "shared_nodes",
+        "dim", "flip", "cfl", "friction", "bond_energy", "removed", "threads", "shared_nodes",
         "memory", "outdir", "update", "shape", "transfer", "ignition_time",
         "ignition", "reaction_tol", "reacted", "reaction_substeps", NULL};
     luaL_getmetafield(L, 1, "methods");

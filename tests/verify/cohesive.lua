@@ -105,6 +105,9 @@ for _, c in ipairs {16, 32} do
   V.below(tag .. ": |residual - the brittle bond's| / work", math.abs(h.res - hb.res), 0.005)
 end
 
+V.case "sim.bond_energy reads back"
+V.near("sim.bond_energy of a scene with G_c", lin12.sim.bond_energy, P.gc, 0)
+
 V.case "brittle (bond_energy = 0): nothing booked as cohesion"
 local b = P.run {cells = 16, energy = 0}
 V.below("work of separation booked", math.abs(b.w), 1e-12)

@@ -3,7 +3,8 @@
 -- fracture energy G_c per area is spent.
 --
 -- (a) two blocks pulled apart (lua/mvmpm/pull.lua says how, and its
---     quasi-static reference), linear hats at 12, 16, 24 cells per unit:
+--     quasi-static reference), linear hats at 12, 16, 24 cells per unit
+--     (B-splines at 8, 12, 16; 32 and 48 in studies/cohesive.lua):
 --     the work of separation booked against G_c times the area, the
 --     grip's traction against the quasi-static curve, the first cut
 --     against the strength, the budget, no burial, no NaN.
@@ -22,16 +23,17 @@ local P = require "mvmpm.pull"
 
 local function order(e1, e2, c1, c2) return math.log(e1 / e2) / math.log(c2 / c1) end
 
-local lin12, at24 = nil, {}
+-- linear hats at 12, 16, 24 cells (from 8 to 12 their work's error does
+-- not fall: 1.0103, 1.0177), B-splines at 8, 12, 16
+local at16 = {}
 for _, shape in ipairs {"linear", "bspline2"} do
-  local cells = {12, 16, 24}
+  local cells = shape == "linear" and {12, 16, 24} or {8, 12, 16}
   V.case(string.format("pull apart, %s: sigma %g, delta_c %g, G_c %g", shape, P.sigma, P.dc, P.gc))
   local r = {}
   for i, c in ipairs(cells) do
     local c0 = os.clock()
     r[i] = P.run {cells = c, shape = shape}
-    if shape == "linear" and c == 12 then lin12 = r[i] end
-    if c == 24 then at24[#at24 + 1] = {shape .. " FLIP", r[i].w} end
+    if c == 16 then at16[#at16 + 1] = {shape .. " FLIP", r[i].w} end
     local tag = string.format("%s, %d cells", shape, c)
     V.near(tag .. ": work of separation / (G_c A)", r[i].w, 1, 0.03)
     V.near(tag .. ": grip travel at the first cut / (sigma L / M)", r[i].onset, 1, 0.05)
@@ -56,29 +58,30 @@ for _, shape in ipairs {"linear", "bspline2"} do
          order(f[1], f[3], cells[1], cells[3]))
 end
 
-V.case "the same pull under other transfers, 24 cells: the work agrees across schemes"
+V.case "the same pull under other transfers, 16 cells: the work agrees across schemes"
 for _, k in ipairs {{"linear", "xpic"}, {"bspline2", "apic"}} do
-  local q = P.run {cells = 24, shape = k[1], transfer = k[2]}
+  local q = P.run {cells = 16, shape = k[1], transfer = k[2]}
   V.near(k[1] .. " " .. k[2] .. ": work of separation / (G_c A)", q.w, 1, 0.02)
   V.below(k[1] .. " " .. k[2] .. ": |residual| / work put in", math.abs(q.res), 0.01)
-  at24[#at24 + 1] = {k[1] .. " " .. k[2], q.w}
+  at16[#at16 + 1] = {k[1] .. " " .. k[2], q.w}
 end
 local lo, hi = math.huge, -math.huge
-for _, a in ipairs(at24) do lo, hi = math.min(lo, a[2]), math.max(hi, a[2]) end
-V.below("largest / smallest work of separation over the four schemes - 1", hi / lo - 1, 0.01)
+for _, a in ipairs(at16) do lo, hi = math.min(lo, a[2]), math.max(hi, a[2]) end
+-- measured 0.78 % here, 0.40 % at 24 cells and 0.16 % at 48 (the study)
+V.below("largest / smallest work of separation over the four schemes - 1", hi / lo - 1, 0.015)
 
-V.case "the same pull in 3-D (the blocks 0.25 deep, periodic back and front), 12 cells"
-local r3 = P.run {cells = 12, dim = 3}
-V.near("3-D: work of separation / the 2-D run's", r3.w / lin12.w, 1, 1e-6)
-V.near("3-D: traction error / the 2-D run's", r3.curve / lin12.curve, 1, 1e-6)
-V.near("3-D: first cut / the 2-D run's", r3.onset / lin12.onset, 1, 1e-9)
+V.case "the same pull in 3-D (the blocks 0.25 deep, periodic back and front), 8 cells"
+local r2, r3 = P.run {cells = 8}, P.run {cells = 8, dim = 3}
+V.near("3-D: work of separation / the 2-D run's", r3.w / r2.w, 1, 1e-6)
+V.near("3-D: traction error / the 2-D run's", r3.curve / r2.curve, 1, 1e-6)
+V.near("3-D: first cut / the 2-D run's", r3.onset / r2.onset, 1, 1e-9)
 V.below("3-D: |residual| / work put in", math.abs(r3.res), 0.01)
 V.above("3-D: gap between the blocks / cell at the end", r3.gap, 0)
 
 V.case "a hard pull: grips at 0.02 (1.5 % of the wave speed) reached in 0.5, to t = 4"
 -- the interface is torn open within a wave transit; the residual of this
--- scene (linear FLIP after a sudden release, 2 % / 6 % of the work at 16 /
--- 32 cells) is the brittle bond's too: the law must add nothing to it
+-- scene (linear FLIP after a sudden release, 2 % / 6.5 % of the work at
+-- 16 / 32 cells) is the brittle bond's too: the law must add nothing to it
 local function hard(c, gc)
   local sim = mvmpm.load("scenarios/bond_pull.lua", {strength = P.sigma, energy = gc, cells = c,
     V0 = 0.02, ramp = 0.5, shift = 0.3, t_end = 4})
@@ -95,7 +98,7 @@ local function hard(c, gc)
   return {w = e.cohesion / (P.gc * P.area), res = e.residual / e.boundary_work, bad = bad,
           gap = (bmin - amax) * c - 0.5}
 end
-for _, c in ipairs {16, 32} do
+for _, c in ipairs {16, 24} do
   local h, hb = hard(c, P.gc), hard(c, 0)
   local tag = string.format("hard, %d cells", c)
   V.near(tag .. ": work of separation / (G_c A)", h.w, 1, 0.03)
@@ -106,7 +109,7 @@ for _, c in ipairs {16, 32} do
 end
 
 V.case "sim.bond_energy reads back"
-V.near("sim.bond_energy of a scene with G_c", lin12.sim.bond_energy, P.gc, 0)
+V.near("sim.bond_energy of a scene with G_c", r2.sim.bond_energy, P.gc, 0)
 
 V.case "brittle (bond_energy = 0): nothing booked as cohesion"
 local b = P.run {cells = 16, energy = 0}

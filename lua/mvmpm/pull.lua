@@ -36,6 +36,18 @@ function P.tref(u, gc)
   return math.max(0, P.sigma * (1 - 2 * u / dc) / (1 - 2 * P.sigma / (P.M * dc)))
 end
 
+-- the smallest gap between block A's and block B's particles beyond
+-- their spacing, in cells (negative: they overlap)
+function P.gap(sim, cells)
+  local x, body = sim:particles("position"), sim:particles("body")
+  local amax, bmin = -1e9, 1e9
+  for i = 1, #x.x do
+    if body[i] == 2 then amax = math.max(amax, x.x[i])
+    elseif body[i] == 3 then bmin = math.min(bmin, x.x[i]) end
+  end
+  return (bmin - amax) * cells - 0.5
+end
+
 -- o: cells, shape, transfer, energy (default P.gc), dim (3: the blocks 0.25 deep,
 -- the area 0.125), run (a study's clock.run).
 -- Returns w (work of separation / G_c A), curve (mean |grip traction -
@@ -80,15 +92,9 @@ function P.run(o)
   end
   run(sim, tend)
   local e = sim:energy()
-  local x, body = sim:particles("position"), sim:particles("body")
-  local amax, bmin = -1e9, 1e9
-  for i = 1, #x.x do
-    if body[i] == 2 then amax = math.max(amax, x.x[i])
-    elseif body[i] == 3 then bmin = math.min(bmin, x.x[i]) end
-  end
   return {w = gc > 0 and e.cohesion / (gc * area) or e.cohesion, curve = err / n,
           res = e.residual / e.boundary_work, late = math.abs(late / nl) / P.sigma,
-          gap = (bmin - amax) * o.cells - 0.5, onset = first, bad = bad,
+          gap = P.gap(sim, o.cells), onset = first, bad = bad,
           us = us, ts = ts, sim = sim}
 end
 

@@ -89,14 +89,8 @@ local function hard(c, gc)
   sim:every {steps = 1, fn = function(s) local e = s:energy(); if e.total ~= e.total then bad = true end end}
   sim:run(4)
   local e = sim:energy()
-  local x, body = sim:particles("position"), sim:particles("body")
-  local amax, bmin = -1e9, 1e9
-  for i = 1, #x.x do
-    if body[i] == 2 then amax = math.max(amax, x.x[i])
-    elseif body[i] == 3 then bmin = math.min(bmin, x.x[i]) end
-  end
   return {w = e.cohesion / (P.gc * P.area), res = e.residual / e.boundary_work, bad = bad,
-          gap = (bmin - amax) * c - 0.5}
+          gap = P.gap(sim, c)}
 end
 for _, c in ipairs {16, 24} do
   local h, hb = hard(c, P.gc), hard(c, 0)

@@ -29,7 +29,6 @@
 ** it is cut itself.
 */
 #include <math.h>
-#include <stdio.h>
 #include <string.h>
 #include "bands.h"
 #include "par.h"
@@ -296,36 +295,4 @@ void bond_remap(sim *s) {
         g->sp[d][k] = v;
       }
   s->e.bonding += w;
-}
-
-/* The cohesive law acts at nodes both sides share, and they stop sharing
-** a node once the opening passes about half a cell (linear hats: each
-** side's particle beside the interface, a quarter cell from it, leaves
-** the node's cell): measured on scenarios/bond_pull.lua with an opening
-** at failure of 0.01, the work of separation was 1.005 of G_c at 48 cells
-** (half a cell 0.0104) and 0.979 at 64 (0.0078).  The weakest bond of the
-** scene (a particle's strength or a law's cap) opens farthest. */
-int sim_cohesion_check(sim *s) {
-  const particles *ps = &s->ps;
-  const double *bp;
-  double sig = s->cfg.bond_default, dc;
-  size_t i;
-  int k;
-  if (s->fcoh < 0 || !(s->cfg.bond_gc > 0)) return 0;
-  bp = particles_comp(ps, s->fbond, 0);
-  for (k = 0; k < s->nlaw; k++)
-    if (s->laws[k].bond > 0 && s->laws[k].bond < sig) sig = s->laws[k].bond;
-  for (i = 0; i < ps->n; i++)
-    if (bp[i] > 0 && bp[i] < sig) sig = bp[i];
-  if (!(sig > 0) || !isfinite(sig)) return 0;
-  dc = 2 * s->cfg.bond_gc / sig;
-  if (!(dc > 0.5 * s->g.h)) return 0;
-  snprintf(s->err, sizeof s->err,
-           "sim: field 'bond_energy' = %g opens the weakest bond (strength "
-           "%g) by 2 G/strength = %g before it gives out, more than half a "
-           "cell (%g): the two sides stop sharing nodes before that and the "
-           "rest of the work of separation would be lost; give bond_energy "
-           "<= %g, or a cell >= %g",
-           s->cfg.bond_gc, sig, dc, 0.5 * s->g.h, 0.25 * sig * s->g.h, 2 * dc);
-  return -1;
 }

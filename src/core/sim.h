@@ -325,10 +325,6 @@ const char *sim_advice(const sim *s);
 /* a warning when a wall with friction acts by the node rule, under which
 ** friction hardly turns a round body (docs/verification.md), or NULL */
 const char *sim_wall_advice(const sim *s);
-/* the cohesive law's limit (bond.c): 0, or -1 with s->err saying why,
-** where the weakest bond's opening at failure 2 G_c / sigma passes half a
-** cell, beyond which the sides stop sharing nodes before it gives out */
-int sim_cohesion_check(sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
 /* total energy, kinetic + strain + lag.  Velocities and stresses are a

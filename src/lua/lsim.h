@@ -143,7 +143,7 @@ void lsim_check_speed(lua_State *L, lsim *ls, const double *v, int fnidx,
 ** events in a span of simulated time; what names it for the message */
 /* a bond strength (field 'field' of 'what') that the cohesive law
 ** (sim.bond_energy) would open by more than half a cell before it gives
-** out is refused (bond.c, sim_cohesion_check says why) */
+** out is refused (lua_sim.c says why) */
 void lsim_check_cohesion(lua_State *L, const sim *s, double strength,
                          const char *what, const char *field);
 void lsim_check_every(lua_State *L, const char *what, double every,

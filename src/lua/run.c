@@ -645,7 +645,6 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
     warn_once(ls, &printed, sim_advice(s));
     warn_once(ls, &wprinted, sim_wall_advice(s));
   }
-  if (sim_cohesion_check(s)) luaL_error(L, "%s", s->err);
   if (isfinite(t_end)) run_check(L, simidx, ls, t_end);
   out_start(L, ls);
   pl.next_t = t0 + 0.1 * (t_end - t0);

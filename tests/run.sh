@@ -6,6 +6,11 @@
 # is printed whole, in the order of the list, as soon as it and all
 # before it have finished, so a log reads the same at any JOBS.  The
 # last line adds them all up: "N passed, M failed".
+#
+# LIGHT=1 (make test SAN=1) leaves out the files named in tests/heavy:
+# the convergence ladders whose finest rungs take an hour and more under
+# the sanitizers.  Their code runs there all the same, at coarse rungs,
+# in tests/verify/paths.lua; make test SAN=1 SAN_FULL=1 runs them too.
 set -u
 bin=$1 unitdir=$2
 jobs=${JOBS:-$(nproc 2>/dev/null || echo 1)}
@@ -16,7 +21,12 @@ trap 'rm -rf "$work"' EXIT
 # the jobs: KIND PATH.  The Lua files go first, since they are most of
 # the time and a free core then picks up the short ones at the end
 items=()
-for t in tests/verify/*.lua tests/hard/*.lua tests/random/gen.lua; do items+=("lua $t"); done
+heavy=" $(sed -e 's/#.*//' tests/heavy | tr -s ' \n' '  ') "
+skipped=()
+for t in tests/verify/*.lua tests/hard/*.lua tests/random/gen.lua; do
+  if [ "${LIGHT:-0}" = 1 ] && [[ $heavy == *" $t "* ]]; then skipped+=("$t"); continue; fi
+  items+=("lua $t")
+done
 for t in "$unitdir"/test_*; do [ -x "$t" ] && items+=("unit $t"); done
 items+=("repl tests/repl/check.sh")
 for t in tests/fault/*.sh; do [ "$(basename "$t")" = lib.sh ] || items+=("fault $t"); done
@@ -67,5 +77,6 @@ done
 wait "$runner"
 echo
 echo "$n jobs, $jobs at a time"
+for t in ${skipped[@]+"${skipped[@]}"}; do echo "skip $t (tests/heavy; SAN_FULL=1 runs it)"; done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

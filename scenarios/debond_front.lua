@@ -20,6 +20,8 @@ local P = mvmpm.params {
   traction = "mixture", -- the traction the bond test reads ("fit": fitted, averaged over bond_length)
   bond_length = 0,     -- with "fit": the length of interface it is averaged over
   shape = "linear",    -- shape functions ("linear", "gimp", "bspline2")
+  flip = 1,            -- FLIP fraction; 0.99 at 64 cells and finer, where pure
+                       -- FLIP's noise cuts the held interface early (docs/verification.md)
   energy = 0,          -- fracture energy per area (the cohesive law; 0: brittle)
 }
 
@@ -29,6 +31,7 @@ local sim = mvmpm.sim {
   t_end = P.t_end,
   sides = "free",
   shape = P.shape,
+  flip = P.flip,
   bond_traction = P.traction,
   bond_length = P.bond_length,
   bond_energy = P.energy,

@@ -2,7 +2,7 @@
 -- shared by tests/verify/bonds.lua and studies/debond_front.lua.
 --
 -- The scene is loaded with the options o (cells, traction, bond_length,
--- shape, energy), run to t = 12.9 (the seed lets go at 13), then to 17.5.  The
+-- shape, flip, energy), run to t = 12.9 (the seed lets go at 13), then to 17.5.  The
 -- debonded length is the drop of the bonded area (the grid's measure,
 -- which counts the seed's 0.25 and reaches about 2.5 once the whole
 -- interface has let go) since t = 12.9; the front's speed is its
@@ -16,7 +16,7 @@ local M = {cR = 0.6542}   -- plane strain, K the 3-D bulk modulus (docs/algorith
 function M.run(o)
   local sim = mvmpm.load("scenarios/debond_front.lua",
     {cells = o.cells, traction = o.traction, bond_length = o.bond_length, shape = o.shape,
-     energy = o.energy})
+     flip = o.flip, energy = o.energy})
   sim:run(12.9)
   local A0 = sim:energy().bonded_area
   local ts, ls = {}, {}

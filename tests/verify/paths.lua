@@ -26,9 +26,10 @@ for _, k in ipairs {
   for key, v in pairs(k[3]) do o[key] = v end
   local r = S.run(o)
   V.holds(k[1] .. ": speed and spin finite", finite(r.d.vx) and finite(r.d.omega))
-  -- friction slows the disc and spins it forward (omega < 0 rolling right)
-  V.below(k[1] .. ": vx at t = 0.6 (thrown at 1)", r.d.vx, 1)
-  V.below(k[1] .. ": omega at t = 0.6", r.d.omega, 0)
+  -- friction slows the disc and spins it forward (omega < 0 rolling
+  -- right); measured vx 0.81-0.82, omega -0.14 (XPIC) to -0.76
+  V.below(k[1] .. ": vx at t = 0.6 (thrown at 1)", r.d.vx, 0.95)
+  V.below(k[1] .. ": omega at t = 0.6", r.d.omega, -0.05)
   V.above(k[1] .. ": friction work (never negative)", r.e.dissipated, 0)
   V.below(k[1] .. ": |budget residual| / (E0 + |boundary work|)", closes(r.e), 0.02)
 end
@@ -119,5 +120,5 @@ do
   sim:run()
   local e = sim:energy()
   V.holds("energy finite", finite(e.total))
-  V.above("some of the interface debonded by t = 24", e.debonded, 0)
+  V.above("bond cuts by t = 24 (measured 60)", e.debonded, 1)
 end

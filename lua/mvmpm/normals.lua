@@ -10,14 +10,16 @@
 --   centres, so the relative velocity across it is kept, no spin, energy
 --   kept.
 -- A normals method is named "method/R" for normal_window = R ("method"
--- alone: R = 0).
+-- alone: R = 0), with "+patch" after it for normal_patch = true.
 local mvmpm = require "mvmpm"
 local M = {}
 
--- "method/R" -> normals, normal_window
+-- "method/R+patch" -> normals, normal_window, normal_patch
 function M.opts(method)
-  local m, w = method:match("^(%a+)/(%d+)$")
-  return m or method, tonumber(w) or 0
+  local base, patch = method:match("^(.-)(%+patch)$")
+  base = base or method
+  local m, w = base:match("^(%a+)/(%d+)$")
+  return m or base, tonumber(w) or 0, patch ~= nil
 end
 
 -- least-squares slope of v(t)
@@ -43,7 +45,7 @@ end
 function M.block(o)
   local L, T = 0.2, 0.4
   local th = math.rad(o.deg or 30)
-  local meth, win = M.opts(o.method)
+  local meth, win, pat = M.opts(o.method)
   local rot0 = o.deg ~= nil
   local S, N = {math.cos(th), -math.sin(th)}, {math.sin(th), math.cos(th)}
   if not rot0 then S, N = {1, 0}, {0, 1} end
@@ -52,7 +54,7 @@ function M.block(o)
   local sim = mvmpm.sim {
     domain = {x = {0, 1}, y = {0, 1}}, cell = L / o.k, ppc = 2, sides = "free",
     gravity = rot0 and {0, -1} or {math.sin(th), -math.cos(th)}, shape = o.shape or "linear",
-    t_end = T, normals = meth, normal_window = win, contact_gap = o.gap, body_contact = o.body_contact,
+    t_end = T, normals = meth, normal_window = win, normal_patch = pat, contact_gap = o.gap, body_contact = o.body_contact,
     contact = {friction = o.mu}}
   local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}
   sim:body {name = "slope", material = m, driven = {0, 0},
@@ -106,10 +108,10 @@ end
 -- exact only for a short, elastic impact.
 function M.discs(o)
   local off = (o.offset or 0) / math.sqrt(2)
-  local meth, win = M.opts(o.method)
+  local meth, win, pat = M.opts(o.method)
   local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / o.cells, ppc = 2,
     sides = "free", t_end = o.t_end or 3.0, shape = o.shape or "linear", normals = meth,
-    normal_window = win, contact_gap = o.gap, threads = o.threads, body_contact = o.body_contact}
+    normal_window = win, normal_patch = pat, contact_gap = o.gap, threads = o.threads, body_contact = o.body_contact}
   local m = mvmpm.elastic {E = 1000, nu = 0.3, density = 1000}
   local a = sim:body {name = "lower", material = m, velocity = {0.1, 0.1},
     shape = mvmpm.disk {center = {0.2, 0.2}, radius = 0.2}}

@@ -265,7 +265,10 @@ static void normals_part(void *arg, int t, int nparts) {
   normals(s, k0, k1);
 }
 
-void contact_normals(sim *s) { par_run(s->work.par, normals_part, s); }
+void contact_normals(sim *s) {
+  par_run(s->work.par, normals_part, s);
+  if (s->cfg.normal_patch && s->work.cplab) contact_patch_normals(s);
+}
 
 /*
 ** With a driven partner, the normal traction the bond carries at node n
@@ -895,7 +898,7 @@ int contact_prepare(sim *s) {
   if (grow((void **)&wk->crec, &nc, g->nshared, CREC * sizeof *wk->crec) ||
       grow((void **)&wk->cbody, &wk->cnodecap, g->nshared, sizeof *wk->cbody))
     return -1;
-  if (s->cfg.body_rule == BODY_PATCH) {
+  if (s->cfg.body_rule == BODY_PATCH || s->cfg.normal_patch) {
     /* contact_patch.c: a label per node, -1 between steps, and a list */
     if (!wk->cplab) {
       size_t i;

@@ -164,6 +164,7 @@ typedef struct sim_cfg {
   int body_rule;     /* enum body_rule: the same between bodies */
   int normals;       /* enum normals_kind: how contact normals are taken */
   int normal_window; /* ... from the shared nodes within this many cells */
+  int normal_patch;  /* 1: then one normal per contact patch (their mean) */
   double mcut_rel;   /* mcut as a fraction of the lightest particle */
   int sort_every;    /* steps between sorts by cell */
   int ppc;
@@ -379,6 +380,8 @@ int contact_prepare(sim *s);   /* contact.c: room for its records */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
 void contact_patches(sim *s);  /* contact_patch.c: ... per contact patch
                                   (body_contact = "patch"), first */
+void contact_patch_normals(sim *s); /* contact_patch.c: each patch's nodes
+                                  given its mean normal (normal_patch) */
 /* contact.c: the first half of what slot sl's impulse c dissipates,
 ** relative to vref; c kept in a for book_finish */
 double contact_lose(const grid *g, int32_t sl, const double vref[DIM],

@@ -277,7 +277,7 @@ int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
-      "wall_remap", "wall_contact", "body_contact", "normals", "normal_window", "contact_gap",
+      "wall_remap", "wall_contact", "body_contact", "normals", "normal_window", "normal_patch", "contact_gap",
       "xpic", "bond_release", "bond_traction", "bond_length", "bond_energy", "dim",
       NULL};
   static const char *const updates[] = {"usl", "musl", "usavg", NULL};
@@ -462,6 +462,7 @@ int lsim_new(lua_State *L) {
                    "separation as the grid is refined)", what);
     s->cfg.normal_window = (int)chk_num(L, 1, what, "normal_window", s->cfg.normal_window,
                                     0, NORMAL_WINDOW_MAX, CHK_INT);
+    s->cfg.normal_patch = chk_bool(L, 1, what, "normal_patch", 0);
     lua_getfield(L, 1, "units");
     snprintf(ls->units, sizeof ls->units, "%s",
              lua_isnil(L, -1) ? "nondimensional" : luaL_checkstring(L, -1));

@@ -31,20 +31,22 @@ B.line("ratio", "(c) t(1000 grains) / t(10 grains)", per[1000] / per[10], "",
 
 -- The cost of contact accuracy: the 1,000-grain bed with each way of
 -- taking the contact normals (sim.normals; "m/R": over a window of R
--- cells, sim.normal_window; "+patch": body_contact = "patch"), as a
+-- cells, sim.normal_window; "+patch": body_contact = "patch"; "+npatch":
+-- normal_patch = true, one normal per contact patch), as a
 -- ratio to the default ("mass").  The four scenes are stepped in turns (n steps of each per
 -- round, the order rotated each round) so a neighbour's load falls on
 -- all of them; the ratio is the median of the rounds'.
 do
   -- "+patch": with contact between bodies per patch (body_contact)
   local opts = {"mass", "volume", "maxvolume", "plane", "maxvolume/4", "plane/4", "mass+patch",
-                "maxvolume/4+patch"}
+                "maxvolume/4+patch", "mass+npatch", "plane/4+npatch"}
   local sims, per = {}, {}
   for k, o in ipairs(opts) do
-    local base, patch = o:match("^([^+]+)(%+?p?a?t?c?h?)$")
+    local base, suffix = o:match("^([^+]+)%+?(%a*)$")
     local m, w = base:match("^(%a+)/(%d+)$")
     sims[k] = packing(50, 20, {normals = m or base, normal_window = tonumber(w) or 0,
-                               body_contact = patch ~= "" and "patch" or nil})
+                               body_contact = suffix == "patch" and "patch" or nil,
+                               normal_patch = suffix == "npatch"})
     sims[k]:step(3)
     per[k] = {}
   end

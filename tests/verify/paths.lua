@@ -99,7 +99,7 @@ end
 V.case "block on a tilted flat face and two discs meeting, 8 cells (normals.lua)"
 do
   local C = require "mvmpm.normals"
-  for _, m in ipairs {"mass", "plane/8"} do
+  for _, m in ipairs {"mass", "plane/8", "plane/4+patch"} do
     local b = C.block {k = 8, method = m, mu = 0.2, deg = 30}
     V.holds(m .. ": block's acceleration finite", finite(b.a))
     -- g (sin 30 - 0.2 cos 30) slides the block down; the mass normals

@@ -6,7 +6,8 @@
 --   side with linear hats and GIMP, "maxvolume" and "plane" over a
 --   window of 4 cells, and node-by-node "mass"; then at 15, 22, 37, 52
 --   and 60 degrees with linear hats and the windowed methods (the
---   plane also over 8 cells).
+--   plane also over 8 cells), each windowed method also with one normal
+--   per contact patch ("+patch": normal_patch = true).
 --   Two discs, head on and glancing (offset 0.2): energy, tangential
 --   velocity kept, |Jt / Jn| at 40, 80, 160 cells across, each shape,
 --   contact_gap "touch" and "step".
@@ -30,7 +31,7 @@ end
 print("-- block on a flat body rotated to the grid: |a/a_ref - 1| (rotation rad, hop/L) [cpu s]")
 for _, c in ipairs {{30, 0}, {30, 0.2}, {45, 0}, {45, 0.2}} do
   for _, shape in ipairs {"linear", "gimp"} do
-    for _, m in ipairs {"mass", "maxvolume/4", "plane/4"} do
+    for _, m in ipairs {"mass", "maxvolume/4", "plane/4", "maxvolume/4+patch", "plane/4+patch"} do
       local t, e = {}, {}
       for i, k in ipairs(K) do
         local r = C.block {k = k, method = m, mu = c[2], deg = c[1], shape = shape}
@@ -51,7 +52,7 @@ end
 print("-- block at other angles, linear: a / a_ref - 1 (hop/L) [cpu s]")
 for _, deg in ipairs {15, 22, 37, 52, 60} do
   for _, mu in ipairs {0, 0.2} do
-    for _, m in ipairs {"maxvolume/4", "plane/4", "plane/8"} do
+    for _, m in ipairs {"maxvolume/4", "plane/4", "plane/8", "maxvolume/4+patch", "plane/4+patch"} do
       local t, e = {}, {}
       for i, k in ipairs(K) do
         local r = C.block {k = k, method = m, mu = mu, deg = deg}

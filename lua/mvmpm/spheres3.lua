@@ -25,7 +25,7 @@ function M.run(cells, off, t_end, o)
   local lo = sh ~= 0 and -sh or 0
   local sim = mvmpm.sim {dim = 3, domain = {x = {lo, 3 + lo}, y = {0, 1.5 + off}, z = {0, 1.5}},
     cell = 1 / cells, ppc = 2, sides = "free", shape = o.shape, transfer = o.transfer,
-    update = o.update, normals = o.normals, normal_window = o.normal_window,
+    update = o.update, normals = o.normals, normal_window = o.normal_window, normal_patch = o.normal_patch,
     contact_gap = o.contact_gap, cfl = o.cfl}
   local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
   local a = sim:body {name = "a", material = m, velocity = {0.1, 0, 0},

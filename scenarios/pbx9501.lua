@@ -60,6 +60,7 @@ local P = mvmpm.params {
   update = "musl",     -- or "usl", "usavg"
   normals = "mass",    -- contact normals: "volume", "maxvolume", "plane"
   normal_window = 0,   -- ... from the shared nodes within this many cells
+  normal_patch = false, -- true: one normal per contact patch (flat faces)
   contact_gap = "touch", -- or "step": contact judged at the step's end
   bond_release = "open", -- or "contact": how a released bond meets again
   body_contact = "node", -- or "patch": bodies meet per contact patch
@@ -130,6 +131,7 @@ local sim = mvmpm.sim {
   },
   contact = {friction = P.friction, bond = false},
   shape = P.shape, update = P.update, normals = P.normals, normal_window = P.normal_window,
+  normal_patch = P.normal_patch,
   contact_gap = P.contact_gap, bond_release = P.bond_release, body_contact = P.body_contact,
   bond_energy = P.bond_energy,
 }

@@ -25,7 +25,7 @@ function M.run(o)
     shape = o.shape, transfer = o.transfer, flip = o.flip, update = o.update,
     cfl = o.cfl or 0.25, wall_contact = o.wall_contact, body_contact = o.body_contact,
     threads = o.threads, t_end = T,
-    normals = o.normals, normal_window = o.normal_window,
+    normals = o.normals, normal_window = o.normal_window, normal_patch = o.normal_patch,
     gravity = {g * math.sin(th), -g * math.cos(th)},
     sides = {left = "periodic", right = "periodic",
              bottom = {"wall", friction = o.slab and "stick" or o.mu}, top = "wall"},

@@ -55,7 +55,7 @@ function M.run(o)
     shape = sc.shape, transfer = sc.transfer, flip = sc.flip or 1, cfl = 0.25,
     t_end = T, sides = {left = wall, right = wall, bottom = wall, top = wall},
     contact = {friction = mu}, body_contact = o.body_contact, wall_contact = o.wall_contact,
-    normals = o.normals, normal_window = o.normal_window,
+    normals = o.normals, normal_window = o.normal_window, normal_patch = o.normal_patch,
   }
   local m = mvmpm.elastic {K = 100, G = 50, density = 1}
   for _, g in ipairs(M.pack(o.n or 30, o.seed or 1)) do

@@ -74,6 +74,7 @@ function M.params(extra)
     shape = "linear",    -- or "gimp", "bspline2"
     normals = "mass",    -- contact normals: "volume", "maxvolume", "plane"
     normal_window = 0,   -- ... from the shared nodes within this many cells
+  normal_patch = false, -- true: one normal per contact patch (flat faces)
     contact_gap = "touch", -- or "step": contact judged at the step's end
     wall_contact = "node", -- or "patch": the sides act per contact patch
     body_contact = "node", -- or "patch": bodies meet per contact patch
@@ -138,6 +139,7 @@ function M.build(P)
     domain = {x = {0, L}, y = {0, L}}, cell = L / P.cells, ppc = P.ppc,
     t_end = M.time_of(P, P.strain), cfl = P.cfl, flip = P.flip,
     update = P.update, shape = P.shape, normals = P.normals, normal_window = P.normal_window,
+    normal_patch = P.normal_patch,
     contact_gap = P.contact_gap, wall_contact = P.wall_contact, body_contact = P.body_contact,
     sides = {left = side(-1), right = side(1), bottom = "periodic", top = "periodic"},
     contact = {friction = P.friction},

@@ -72,7 +72,7 @@ function M.run(o)
     domain = {x = {0, 4}, y = {0, H + y0 + 1.5}}, cell = 2 * R / o.cells, ppc = 2,
     shape = sc.shape, transfer = sc.transfer, flip = sc.flip or 1, cfl = 0.25,
     t_end = T, gravity = {0, -g}, wall_contact = o.wall_contact, body_contact = o.body_contact,
-    normals = o.normals, normal_window = o.normal_window,
+    normals = o.normals, normal_window = o.normal_window, normal_patch = o.normal_patch,
     sides = {left = "periodic", right = "periodic",
              bottom = {"wall", friction = o.slab and 0 or o.mu}, top = "wall"},
     contact = o.slab and {friction = o.mu} or nil,

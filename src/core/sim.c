@@ -27,6 +27,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->t_end = 1.0;
   s->cfg.gap_check = 1;
   s->cfg.normal_window = 0;
+  s->cfg.normal_patch = 0;
   s->cfg.bond_default = INFINITY;
   s->faff = -1;
   s->t_stop = INFINITY;

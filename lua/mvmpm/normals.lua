@@ -34,7 +34,8 @@ end
 
 -- o: k (cells per block side), method, mu, deg (the slope and the block
 -- rotated by deg to the grid, gravity down; nil: the slope along the grid
--- and gravity rotated by 30 degrees), shape ("linear"), gap ("touch").
+-- and gravity rotated by 30 degrees), shape ("linear"), gap ("touch"),
+-- flip, transfer (the sim's defaults).
 -- Returns {a (over the reference), spin (largest |omega| after the block
 -- settles, t > 0.1), across (largest speed across the surface over the
 -- speed along it at the end), rot (|spin integrated|, rad), hop (how far
@@ -54,6 +55,7 @@ function M.block(o)
   local sim = mvmpm.sim {
     domain = {x = {0, 1}, y = {0, 1}}, cell = L / o.k, ppc = 2, sides = "free",
     gravity = rot0 and {0, -1} or {math.sin(th), -math.cos(th)}, shape = o.shape or "linear",
+    flip = o.flip, transfer = o.transfer,
     t_end = T, normals = meth, normal_window = win, normal_patch = pat, contact_gap = o.gap, body_contact = o.body_contact,
     contact = {friction = o.mu}}
   local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}

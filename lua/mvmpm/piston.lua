@@ -43,7 +43,7 @@ end
 
 -- o: cells (per smallest diameter, 2 rmin), scheme {shape, transfer,
 -- flip}, mu, n (discs, 30), seed, v (piston speed, 0.5), T (4),
--- body_contact, wall_contact, normals, normal_window (the sim's);
+-- body_contact, wall_contact, normals, normal_window, normal_patch (the sim's);
 -- samples, sample: sample(energy, t) is called at T k / samples.
 -- Returns the energy table, the piston's work, the CPU time.
 function M.run(o)

@@ -56,7 +56,7 @@ end
 -- height above the floor), T, n (samples), wall_contact, run
 -- (function(sim, t), default sim:run), slab (true: the floor is a driven
 -- slab's top face, friction the contact law's; then normals,
--- normal_window).  Returns the energy table, the
+-- normal_window, normal_patch).  Returns the energy table, the
 -- mass, the friction work of the model sum F dt . slip, the rigid disc's
 -- friction work (M.rigid, for v0 along the floor), and the last state.
 function M.run(o)

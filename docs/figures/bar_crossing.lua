@@ -3,9 +3,7 @@
 -- at 16 ... 128 cells per unit length, linear hats and GIMP, log-log.
 -- Run by `make figures` (about three minutes).
 local mvmpm = require "mvmpm"
-BAR_CROSSING_LOAD_ONLY = true
-local B = dofile("tests/verify/bar_crossing.lua")
-BAR_CROSSING_LOAD_ONLY = nil
+local B = require "mvmpm.crossing"
 local series = {}
 for _, shape in ipairs {"linear", "gimp"} do
   local x, y = {}, {}

@@ -35,7 +35,8 @@ end
 -- o: k (cells per block side), method, mu, deg (the slope and the block
 -- rotated by deg to the grid, gravity down; nil: the slope along the grid
 -- and gravity rotated by 30 degrees), shape ("linear"), gap ("touch"),
--- flip, transfer (the sim's defaults).
+-- flip, transfer (the sim's defaults), dim (3: the same section extruded
+-- two cells along a periodic z; the answers are the 2-D ones).
 -- Returns {a (over the reference), spin (largest |omega| after the block
 -- settles, t > 0.1), across (largest speed across the surface over the
 -- speed along it at the end), rot (|spin integrated|, rad), hop (how far
@@ -52,25 +53,34 @@ function M.block(o)
   if not rot0 then S, N = {1, 0}, {0, 1} end
   local P = rot0 and {0.05, 0.75} or {0.0, 0.4}
   local function pt(a, b) return {P[1] + a * S[1] + b * N[1], P[2] + a * S[2] + b * N[2]} end
+  local d3, h = o.dim == 3, L / o.k
+  local function prism(poly)
+    return d3 and mvmpm.extrude {polygon = poly, lo = 0, hi = 2 * h} or mvmpm.polygon(poly)
+  end
+  local g = rot0 and {0, -1} or {math.sin(th), -math.cos(th)}
   local sim = mvmpm.sim {
-    domain = {x = {0, 1}, y = {0, 1}}, cell = L / o.k, ppc = 2, sides = "free",
-    gravity = rot0 and {0, -1} or {math.sin(th), -math.cos(th)}, shape = o.shape or "linear",
+    dim = o.dim, domain = {x = {0, 1}, y = {0, 1}, z = d3 and {0, 2 * h} or nil}, cell = h, ppc = 2,
+    sides = d3 and {left = "free", right = "free", bottom = "free", top = "free",
+                    front = "periodic", back = "periodic"} or "free",
+    gravity = d3 and {g[1], g[2], 0} or g, shape = o.shape or "linear",
     flip = o.flip, transfer = o.transfer,
     t_end = T, normals = meth, normal_window = win, normal_patch = pat, contact_gap = o.gap, body_contact = o.body_contact,
     contact = {friction = o.mu}}
   local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}
-  sim:body {name = "slope", material = m, driven = {0, 0},
-    shape = mvmpm.polygon {pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}}
+  sim:body {name = "slope", material = m, driven = d3 and {0, 0, 0} or {0, 0},
+    shape = prism {pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}}
   local b = sim:body {name = "block", material = m,
-    shape = mvmpm.polygon {pt(0.1, 0), pt(0.1 + L, 0), pt(0.1 + L, L), pt(0.1, L)}}
+    shape = prism {pt(0.1, 0), pt(0.1 + L, 0), pt(0.1 + L, L), pt(0.1, L)}}
+  -- the spin about z (a 3-D body's omega is a vector)
+  local function wz(d) return d3 and d.omega[3] or d.omega end
   local ts, vs, spin, across, last, rot, t0 = {}, {}, 0, 0, 0, 0, 0
   local d0 = b:diag()
   sim:every {steps = 1, fn = function(s)
     local d = b:diag()
-    rot, t0 = rot + d.omega * (s.t - t0), s.t
+    rot, t0 = rot + wz(d) * (s.t - t0), s.t
     if s.t < 0.1 then return end
     ts[#ts + 1], vs[#vs + 1] = s.t, d.vx * S[1] + d.vy * S[2]
-    spin = math.max(spin, math.abs(d.omega))
+    spin = math.max(spin, math.abs(wz(d)))
     across = math.max(across, math.abs(d.vx * N[1] + d.vy * N[2]))
     last = vs[#vs]
   end}

@@ -23,54 +23,14 @@
 --           shape diverges.
 -- GIMP is asserted; linear hats' numbers are printed (docs/verification.md,
 -- bar crossing cells; open item 1).
-local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
-
-local M = 1 + 4 * 0.5 / 3
-local c = math.sqrt(M)
-local L, x0, a = 2, 0.5, 0.02
-
-local function exact(x, t)
-  local s, v = x - x0, 0
-  for n = 1, 399, 2 do
-    v = v - 4 * a * L / (n * n * math.pi ^ 2) * math.cos(n * math.pi * s / L) * math.cos(n * math.pi * c * t / L)
-  end
-  return v
-end
-
-local function run(cells, shape)
-  local sim = mvmpm.sim {domain = {x = {0, 3}, y = {0, 0.25}}, cell = 1 / cells, t_end = 8,
-    shape = shape, sides = {left = "free", right = "free", bottom = "periodic", top = "periodic"}}
-  local m = mvmpm.elastic {K = 1, G = 0.5, density = 1}
-  sim:body {shape = mvmpm.rect {lo = {0.5, 0}, hi = {2.5, 0.25}}, material = m,
-            velocity = function(x) return a * (x - 1.5), 0 end}
-  local e0 = sim:energy().total
-  -- the series is in the material coordinate: each particle's start, by
-  -- id (the sort by cell reorders them)
-  local X, v0 = {}, 0
-  do
-    local x, id = sim:particles("position").x, sim:particles("id")
-    for i = 1, #x do X[id[i]] = x[i] end
-  end
-  for _, vx in ipairs(sim:particles("velocity").x) do v0 = v0 + vx * vx end
-  local worst = 0
-  for _, t in ipairs {2, 4, 6, 8} do
-    sim:run(t)
-    local v, id, num = sim:particles("velocity").x, sim:particles("id"), 0
-    for i = 1, #v do num = num + (v[i] - exact(X[id[i]], t)) ^ 2 end
-    worst = math.max(worst, math.sqrt(num / v0))
-  end
-  return {err = worst, dE = sim:energy().total / e0 - 1}
-end
-
--- docs/figures/bar_crossing.lua takes run() for its wider ladder
-if BAR_CROSSING_LOAD_ONLY then return {run = run} end
+local B = require "mvmpm.crossing"
 
 local CELLS = {16, 32, 64}
 local r = {}
 for _, shape in ipairs {"gimp", "linear"} do
   r[shape] = {}
-  for k, n in ipairs(CELLS) do r[shape][k] = run(n, shape) end
+  for k, n in ipairs(CELLS) do r[shape][k] = B.run(n, shape) end
 end
 
 V.case "free bar crossing cells (a = 0.02, L = 2): velocity against the modes, energy"

@@ -273,33 +273,7 @@ do
   -- 3-D: the same block and slope extruded two cells along z (periodic),
   -- one normal per patch in 3-D's patches: the 2-D numbers
   do
-    local mv = mvmpm
-    local function block3(k, mu, deg)
-      local L, th = 0.2, math.rad(deg)
-      local S, N = {math.cos(th), -math.sin(th)}, {math.sin(th), math.cos(th)}
-      local function pt(a, b) return {0.05 + a * S[1] + b * N[1], 0.75 + a * S[2] + b * N[2]} end
-      local h = L / k
-      local sim = mv.sim {dim = 3, domain = {x = {0, 1}, y = {0, 1}, z = {0, 2 * h}}, cell = h, ppc = 2,
-        sides = {left = "free", right = "free", bottom = "free", top = "free",
-                 front = "periodic", back = "periodic"},
-        gravity = {0, -1, 0}, t_end = 0.4, normals = "plane", normal_window = 4,
-        normal_patch = true, contact = {friction = mu}}
-      local m = mv.elastic {E = 200, nu = 0.3, density = 1}
-      sim:body {name = "slope", material = m, driven = {0, 0, 0}, shape = mv.extrude {
-        polygon = {pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}, lo = 0, hi = 2 * h}}
-      local b = sim:body {name = "block", material = m, shape = mv.extrude {
-        polygon = {pt(0.1, 0), pt(0.1 + L, 0), pt(0.1 + L, L), pt(0.1, L)}, lo = 0, hi = 2 * h}}
-      local n, st, sv, stt, stv = 0, 0, 0, 0, 0
-      sim:every {steps = 1, fn = function(x)
-        if x.t < 0.1 then return end
-        local d = b:diag()
-        local v = d.vx * S[1] + d.vy * S[2]
-        n, st, sv, stt, stv = n + 1, st + x.t, sv + v, stt + x.t ^ 2, stv + x.t * v
-      end}
-      sim:run()
-      return (n * stv - st * sv) / (n * stt - st * st) / (math.sin(th) - mu * math.cos(th))
-    end
-    local a3 = block3(8, 0.2, 45)
+    local a3 = C.block {k = 8, method = PP, mu = 0.2, deg = 45, dim = 3}.a
     local a2 = C.block {k = 8, method = PP, mu = 0.2, deg = 45}.a
     V.below(PP .. ", 3-D (extruded, periodic z), 45 deg, mu 0.2: |a / a_ref - 1| at 8 cells", math.abs(a3 - 1), 0.03)
     V.below(PP .. ", 3-D against 2-D: |a3 - a2|", math.abs(a3 - a2), 1e-6)

@@ -331,7 +331,12 @@ int lsim_new(lua_State *L) {
     nodes *= c + 3;
   }
   ppc = (int)chk_num(L, 1, what, "ppc", 2, 1, 8, CHK_INT);
-  shape = chk_option(L, 1, what, "shape", SHAPE_LINEAR, shape_names);
+  /* quadratic B-splines by default: linear hats' gradient jumps where a
+  ** particle crosses a cell face, and under FLIP that noise stays, so
+  ** their error grows as the grid is refined (the free bar crossing
+  ** cells, the bounce: docs/accuracy.md); B-splines' errors fall there,
+  ** at about 1.5 times the cost per particle-step in 2-D */
+  shape = chk_option(L, 1, what, "shape", SHAPE_BSPLINE2, shape_names);
   bytes = grid_bytes(lo, hi, h, shape_pad(shape)) +
           nodes * pow(ppc, DIM) * (8.0 * (2 * DIM + 2 + 2 * NTENS + NSTRESS + 2) + 16);
   /* refuse before allocating; MVMPM_MAX_GB lowers (or raises) the

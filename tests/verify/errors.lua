@@ -115,7 +115,7 @@ local rules = {
     4, {"body 'body1'", "cv > 0"}},
   {"a heat side given two conditions", sim0 .. 's:heat {sides = {left = {temperature = 1, h = 2, ambient = 0}}}',
     3, {"heat.sides.left", "either temperature", "h and ambient"}},
-  {"APIC needs GIMP or B-splines", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, transfer = "apic"}',
+  {"APIC needs GIMP or B-splines", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, shape = "linear", transfer = "apic"}',
     2, {"transfer = \"apic\"", "gimp", "bspline2"}},
 }
 

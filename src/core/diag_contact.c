@@ -38,6 +38,12 @@ int diag_grid(sim *s) {
     return -1;
   }
   p2g(s);
+  /* USAVG scatters the forces only after its first half-step's stress
+  ** update (usf.c), which a diagnostic may not make: it takes the
+  ** forces of the stresses as they stand, the last step's end (the
+  ** same at rest, off by that half step's increment in motion).
+  ** Without them the walls' and contacts' forces read almost nothing */
+  if (s->cfg.update == UPDATE_USAVG) p2g_force(s);
   solve_momentum(s);
   if (s->g.nshared) contact_normals(s);
   if (s->cfg.gap_check) reach(s); /* the walls' too (diag_wall.h) */

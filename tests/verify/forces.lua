@@ -28,9 +28,11 @@ do
 end
 
 V.case "the floor node by node (sim:wall_nodes): a block brought to rest"
-do
+-- under MUSL and USAVG: USAVG scatters its forces after the step's first
+-- half stress update, which sim:wall_nodes takes as the stresses stand
+for _, upd in ipairs {"musl", "usavg"} do
   local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
-                         gravity = {0, -1}, t_end = 50}
+                         gravity = {0, -1}, t_end = 50, update = upd}
   local m = mvmpm.elastic {K = 10, G = 5, density = 1}
   sim:body {shape = mvmpm.rect {lo = {0.25, 0}, hi = {0.75, 0.5}}, material = m}
   sim:settle {t_max = 20}
@@ -45,13 +47,13 @@ do
     under = under and wn.y[i] <= 0 and wn.y[i] >= ghost and wn.x[i] >= 0.25 - reach and wn.x[i] <= 0.75 + reach
   end
   local _, fy = sim:wall_force("bottom")
-  V.near("nodal forces summed / weight", fw / 0.25, 1, 0.01)
-  V.near("nodal forces summed / the last step's floor force", fw / fy, 1, 0.01)
-  V.holds("the pressed nodes lie on the floor under the block (the stencil beyond)",
+  V.near(upd .. ": " .. "nodal forces summed / weight", fw / 0.25, 1, 0.01)
+  V.near(upd .. ": " .. "nodal forces summed / the last step's floor force", fw / fy, 1, 0.01)
+  V.holds(upd .. ": " .. "the pressed nodes lie on the floor under the block (the stencil beyond)",
     under and #wn.force > 0, #wn.force)
-  V.holds("the left wall presses on no node", #sim:wall_nodes("left").force == 0)
+  V.holds(upd .. ": " .. "the left wall presses on no node", #sim:wall_nodes("left").force == 0)
   local ok, msg = pcall(sim.wall_nodes, sim, "floor")
-  V.holds("a bad side is named in the error", not ok and msg:find("no side 'floor'") ~= nil)
+  V.holds(upd .. ": " .. "a bad side is named in the error", not ok and msg:find("no side 'floor'") ~= nil)
 end
 
 V.case "momentum balance: the plate's and the walls' impulses"

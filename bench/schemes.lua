@@ -1,17 +1,17 @@
 -- bench/schemes.lua - what each scheme costs on the 1,000-grain scene of
 -- bench/grains.lua (1,000 elastic discs, one field each, in contact):
--- CPU seconds per step (os.clock) of shape x update, against the
--- defaults (linear hats, MUSL) in the same process, two repeats.
+-- CPU seconds per step (os.clock) of shape x update, against linear
+-- hats, MUSL in the same process, two repeats.
 --   ./mvmpm test bench/schemes.lua          (about a minute)
 -- Nothing here passes or fails: speed is never a test.
 local B = dofile("bench/lib.lua")
 
 local schemes = {
-  {"linear MUSL (defaults)", {}},
+  {"linear MUSL", {}},
   {"linear USAVG", {update = "usavg"}},
   {"GIMP MUSL", {shape = "gimp"}},
   {"GIMP USAVG", {shape = "gimp", update = "usavg"}},
-  {"B-spline MUSL", {shape = "bspline2"}},
+  {"B-spline MUSL (default)", {shape = "bspline2"}},
   {"B-spline USAVG", {shape = "bspline2", update = "usavg"}},
 }
 local steps = os.getenv("BENCH_QUICK") and 5 or 20

@@ -1,11 +1,11 @@
 -- The free bar crossing cells (tests/verify/bar_crossing.lua) as a
 -- figure for docs/verification.md: the velocity error against the modes
--- at 16 ... 128 cells per unit length, linear hats and GIMP, log-log.
--- Run by `make figures` (about three minutes).
+-- at 16 ... 128 cells per unit length, linear hats, GIMP and B-splines
+-- (the default), log-log.  Run by `make figures` (about five minutes).
 local mvmpm = require "mvmpm"
 local B = require "mvmpm.crossing"
 local series = {}
-for _, shape in ipairs {"linear", "gimp"} do
+for _, shape in ipairs {"linear", "gimp", "bspline2"} do
   local x, y = {}, {}
   for _, n in ipairs {16, 32, 48, 64, 96, 128} do
     local r = B.run(n, shape)

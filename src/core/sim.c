@@ -219,9 +219,11 @@ const char *sim_advice(const sim *s) {
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies at fine grids "
            "(the 3-D sphere's bounce under MUSL: -2.2 %, -0.7 %, +1.6 % after "
-           "three impacts at 8, 16, 32 cells per diameter); for 3-D impacts "
-           "use shape = \"gimp\", update = \"usavg\", cfl = 0.4 (-1.6 %, "
-           "-0.8 %, +0.06 %, -0.12 % at 8, 12, 16, 24) (docs/accuracy.md)";
+           "three impacts at 8, 16, 32 cells per diameter); the default "
+           "shape (B-splines) falls (-6.2 %, -4.7 %, -3.1 % at 8, 12, 16); "
+           "for 3-D impacts shape = \"gimp\", update = \"usavg\", cfl = "
+           "0.4 gives -1.6 %, -0.8 %, +0.06 %, -0.12 % at 8, 12, 16, 24 "
+           "(docs/accuracy.md)";
   /* measured on the frictionless bouncing disc (docs/accuracy.md): the
   ** energy change after three impacts at 8, 16, 32, 48 cells across it.
   ** Linear hats gain per cell crossed under any update; GIMP under MUSL
@@ -232,15 +234,16 @@ const char *sim_advice(const sim *s) {
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies as the grid is "
            "refined (-5 %, -1.2 %, +1.4 %, +3.3 % after three bounces at 8, "
-           "16, 32, 48 cells per diameter); for impacts use shape = "
-           "\"gimp\", update = \"usavg\" (docs/accuracy.md, the bounce's "
-           "convergence)";
+           "16, 32, 48 cells per diameter); the default shape (B-splines) "
+           "falls to +0.5 % at 32, as GIMP with update = \"usavg\" does "
+           "(docs/accuracy.md, the default shape)";
   if (s->cfg.shape == SHAPE_LINEAR)
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies, more as the grid "
            "is refined (under MUSL +25 % after three bounces at 32 cells per "
-           "diameter); for impacts use shape = \"gimp\", update = \"usavg\" "
-           "(docs/accuracy.md, the bounce's convergence)";
+           "diameter), and a free bar crossing cells diverges; the default "
+           "shape (B-splines: -5.7 %, -2.9 %, +0.5 % at 8, 16, 32) does "
+           "not (docs/accuracy.md, the default shape)";
   if (s->cfg.shape == SHAPE_GIMP && s->cfg.update == UPDATE_MUSL)
     return "GIMP with pure FLIP under MUSL gains energy after impacts on "
            "walls or between bodies as the grid is refined (+0.1 %, +2.9 %, "

@@ -64,7 +64,7 @@ local function row(name, errs)
 end
 
 V.case "head-on energy change, 20 40 80 cells (NairnMPM: +1.08 % at 80)"
-for _, shape in ipairs {"linear", "gimp"} do
+for _, shape in ipairs {"linear", "gimp", "bspline2"} do
   for _, nm in ipairs {{"mass", 0}, {"plane", 4}} do
     local e = {}
     for i, c in ipairs(CELLS) do e[i] = math.abs(disks(c, shape, nm[1], nm[2], 0) - 1) end
@@ -72,6 +72,14 @@ for _, shape in ipairs {"linear", "gimp"} do
     row(name, e)
     if shape == "linear" then
       V.below(name .. ": |energy change| at 80 cells", e[3], 0.005)
+    elseif shape == "bspline2" and nm[1] == "mass" then
+      -- the defaults (B-splines, mass normals): measured -2.5 / -1.2 /
+      -- -0.76 %, a loss that falls at order 0.7-1 but is above 0.5 % at
+      -- 80 cells; with "plane"/4 B-splines gain as GIMP does (-0.95 /
+      -- +1.7 / +2.0 %, printed) (docs/verification.md)
+      V.below(name .. ": |energy change| falls 20 -> 40 -> 80 cells",
+        math.max(e[3] / e[2], e[2] / e[1]), 1)
+      V.info(name .. ": |energy change| at 80 cells (0.005 wanted)", e[3])
     else
       -- measured 1.7-2.1 %: GIMP with pure FLIP gains energy here whatever
       -- the normals (the transfer's, docs/accuracy.md); short of 0.5 %

@@ -32,6 +32,7 @@ local P = mvmpm.params {
   cells = 3,           -- cells across min_grain
   gap = 0.25,          -- smallest gap between spheres at seeding, in cells (> 0)
   ppc = 1,             -- particles per cell per direction
+  shape = "linear",    -- or "gimp", "bspline2" (docs/pbx.md was measured on linear hats)
   binder = true,
   bond = 5e6,          -- grain-binder bond strength, Pa (0: none)
   friction = 0.3,
@@ -77,7 +78,7 @@ end
 local t_end = P.strain / P.rate + 0.5 * Tr
 
 local sim = mvmpm.sim {
-  dim = 3, domain = {x = {0, W}, y = {0, W}, z = {0, W}}, cell = h, ppc = P.ppc,
+  dim = 3, domain = {x = {0, W}, y = {0, W}, z = {0, W}}, cell = h, ppc = P.ppc, shape = P.shape,
   t_end = t_end, units = "SI",
   sides = {
     left = {"wall", friction = "stick", velocity = function(t) return 0, -speed(t), 0 end},

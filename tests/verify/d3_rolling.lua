@@ -56,7 +56,7 @@ end
 
 V.case "control: frictionless floor, the sphere slides at g sin(theta) without spin"
 do
-  local r = I.run {cells = 8, deg = 25, mu = 0}
+  local r = I.run {cells = 8, deg = 25, mu = 0, shape = "linear"}
   V.near("linear, 8 cells: a / (g sin)", r.a / (g * math.sin(r.th)), 1, 0.005)
   V.below("linear, 8 cells: |R alpha| / a", math.abs(r.alpha * R / r.a), 0.01)
   V.near("linear, 8 cells: energy residual / potential drop",

@@ -127,14 +127,16 @@ end
 -- the rigid ball's W = 1/2 m v0^2 I / (I + m R^2) (1/7 m v0^2 for a
 -- uniform ball), I about the rolling axis (z) from the particles, as
 -- S.rigid takes it (each cube's own m a^2 / 6 about that axis).  Measured (one-off runs, 16 cells in docs): patch
--- 1.083 / 1.038 / 1.020, node 1.97 / 1.39 / 1.21 at 8 / 12 / 16 cells.
+-- 1.083 / 1.038 / 1.020, node 1.97 / 1.39 / 1.21 at 8 / 12 / 16 cells,
+-- on linear hats (with B-splines, the default shape: patch 1.135 /
+-- 1.055, node 2.76 at 8 cells).
 V.case "3-D: a ball thrown along a frictional floor, per wall rule"
 do
   local mvmpm = require "mvmpm"
   local function ball(c, wall)
     local R, cell = 0.5, 1 / c
     local sim = mvmpm.sim {dim = 3, domain = {x = {0, 3}, y = {0, 2}, z = {0, 1.5}}, cell = cell,
-      ppc = 2, cfl = 0.25, t_end = 2, gravity = {0, -1, 0}, wall_contact = wall,
+      ppc = 2, cfl = 0.25, t_end = 2, gravity = {0, -1, 0}, wall_contact = wall, shape = "linear",
       sides = {left = "periodic", right = "periodic", bottom = {"wall", friction = mu}, top = "wall",
                back = "wall", front = "wall"}}
     sim:body {shape = mvmpm.ball {center = {0.8, R, 0.75}, radius = R},

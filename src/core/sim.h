@@ -318,6 +318,11 @@ int sim_prepare(sim *s);
 int sim_step(sim *s);
 /* the step the CFL rule gives now */
 double sim_stable_dt(const sim *s);
+/* the scheme as it runs, as mvmpm.sim's fields ("shape = \"bspline2\",
+** update = \"musl\", ..."), into buf (n bytes, truncated to fit): what a
+** snapshot records, since a scene that leaves a field to the engine gets
+** whatever the engine's default was when it ran */
+void sim_scheme(const sim *s, char *buf, size_t n);
 /* a warning about the scheme the scene chose, or NULL: linear hats under
 ** pure FLIP (any update), or GIMP under pure FLIP and MUSL, with walls or
 ** contact, whose energy error on impacts grows as the grid is refined

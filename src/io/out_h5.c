@@ -178,7 +178,8 @@ static int putprov(h5s *S, const h5prov *p) {
       (p->build && putstr(S, f, "/", "build", p->build)) ||
       (p->command && putstr(S, f, "/", "command", p->command)) ||
       (p->params && putstr(S, f, "/", "params", p->params)) ||
-      (p->restarted && putstr(S, f, "/", "restarted_from", p->restarted)))
+      (p->restarted && putstr(S, f, "/", "restarted_from", p->restarted)) ||
+      (p->scheme && putstr(S, f, "/", "scheme", p->scheme)))
     return -1;
   return 0;
 }

@@ -77,6 +77,8 @@ typedef struct h5prov {
   const char *command;    /* the command line of the run */
   const char *params;     /* "name = value" lines: the parameters used */
   const char *restarted;  /* the checkpoint the run continued from */
+  const char *scheme;     /* the scheme as run (sim_scheme): defaults change,
+                             and "default" in params does not say which */
 } h5prov;
 
 /* 0 on success; -1 with a message naming the file in err */

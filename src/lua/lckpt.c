@@ -153,7 +153,7 @@ void ckpt_write(lua_State *L, int simidx) {
   h5meta meta;
   h5prov prov;
   h5frame fr;
-  char path[1100], old[1100], err[1024], abs_scene[PATH_MAX];
+  char path[1100], old[1100], err[1024], abs_scene[PATH_MAX], scheme[256];
   const char *scene, *source, *state = NULL;
   size_t statelen = 0;
   int k, r, nomem, top = lua_gettop(L);
@@ -205,6 +205,8 @@ void ckpt_write(lua_State *L, int simidx) {
   meta.scene = scene;
   meta.frame = &fr;
   run_provenance(L, &prov);
+  sim_scheme(s, scheme, sizeof scheme);
+  prov.scheme = scheme;
   r = ckpt_save(path, s, &more, b, &meta, &prov, nomem, err, sizeof err);
   if (r == 0 && ckpt_syncdir(ls->outdir)) {
     snprintf(err, sizeof err, "%s: cannot sync the directory (%s)",

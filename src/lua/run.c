@@ -211,18 +211,20 @@ void run_provenance(lua_State *L, h5prov *meta) {
 
 /* the same as "# name: value" lines for the head of the diagnostics
 ** table, pushed as one string (readers skip lines starting with '#') */
-static const char *csv_preamble(lua_State *L) {
+static const char *csv_preamble(lua_State *L, const sim *s) {
   static const char *const name[] = {"version", "build", "command",
-                                     "restarted_from"};
-  const char *val[4], *p, *nl;
+                                     "restarted_from", "scheme"};
+  const char *val[5], *p, *nl;
+  char scheme[256];
   h5prov m;
   luaL_Buffer b;
   int k;
   run_provenance(L, &m);
+  sim_scheme(s, scheme, sizeof scheme);
   val[0] = m.version; val[1] = m.build; val[2] = m.command;
-  val[3] = m.restarted;
+  val[3] = m.restarted; val[4] = scheme;
   luaL_buffinit(L, &b);
-  for (k = 0; k < 4; k++)
+  for (k = 0; k < 5; k++)
     if (val[k]) {
       luaL_addstring(&b, "# ");
       luaL_addstring(&b, name[k]);
@@ -267,6 +269,7 @@ static int write_snapshot(lua_State *L, lsim *ls, const char *path, char *err,
   h5meta meta;
   h5prov prov;
   h5frame fr;
+  char scheme[256];
   int r;
   memset(&meta, 0, sizeof meta);
   meta.time = ls->s.t;
@@ -277,6 +280,8 @@ static int write_snapshot(lua_State *L, lsim *ls, const char *path, char *err,
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.source");
   meta.source = lua_tostring(L, -1);
   run_provenance(L, &prov);
+  sim_scheme(&ls->s, scheme, sizeof scheme);
+  prov.scheme = scheme;
   meta.frame = &fr;
   if (run_frame(&ls->s, &fr)) {
     snprintf(err, errlen, "%s: out of memory", path);
@@ -371,7 +376,7 @@ static void out_start(lua_State *L, lsim *ls) {
     csv_check(L, path);
     const char *names[NCOLS_ALL + 3];
     csv_cols(names);
-    if (out_csv_open(&ls->csv, path, csv_preamble(L), names, NCOLS, err,
+    if (out_csv_open(&ls->csv, path, csv_preamble(L, &ls->s), names, NCOLS, err,
                      sizeof err))
       luaL_error(L, "%s", err);
     lua_pop(L, 1);

@@ -36,11 +36,16 @@ for f in "$snap" "$ck"; do
   ok $? "$(basename "$f"): the engine's version, as --version says" "$version"
   attr "$f" build | grep -q -- "-O"
   ok $? "$(basename "$f"): the compiler and flags" "$(attr "$f" build | cut -c1-60)"
+  # the scene leaves the scheme to the engine ("default" in params): the
+  # file says what that was
+  attr "$f" scheme | grep -qF 'shape = "bspline2", update = "musl", transfer = "flip", flip = 1, ppc = 2, cfl = 0.25'
+  ok $? "$(basename "$f"): the scheme as run" "$(attr "$f" scheme)"
 done
 python3 "$root/tests/tools/h5sum.py" check prov/*.h5 >/dev/null 2>&1
 ok $? "the checksum block of every file is still valid" "$(ls prov/*.h5 | wc -l) files"
 has prov/diagnostics.csv "#   friction = 0.1" && has prov/diagnostics.csv "# version: $version" &&
-  has prov/diagnostics.csv "# command: " && has prov/diagnostics.csv "# build: "
+  has prov/diagnostics.csv "# command: " && has prov/diagnostics.csv "# build: " &&
+  has prov/diagnostics.csv '# scheme: shape = "bspline2"'
 ok $? "diagnostics.csv starts with the same as # lines"
 head=$(grep -v '^#' prov/diagnostics.csv | head -1)
 ncol=$(awk -F, '{print NF}' <<<"$head")

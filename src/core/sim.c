@@ -204,15 +204,16 @@ int sim_add_body(sim *s, const char *name, int32_t mat, int32_t field) {
   return s->nbody++;
 }
 
+const char *const update_names[] = {"usl", "musl", "usavg", NULL};
+const char *const transfer_names[] = {"flip", "apic", "xpic", NULL};
+
 void sim_scheme(const sim *s, char *buf, size_t n) {
-  static const char *const updates[] = {"usl", "musl", "usavg"};
-  static const char *const transfers[] = {"flip", "apic", "xpic"};
   const sim_cfg *c = &s->cfg;
   char xpic[24] = "";
   if (c->transfer == TRANSFER_XPIC) snprintf(xpic, sizeof xpic, ", xpic = %d", c->xpic);
   snprintf(buf, n, "shape = \"%s\", update = \"%s\", transfer = \"%s\"%s, "
            "flip = %.17g, ppc = %d, cfl = %.17g", shape_names[c->shape],
-           updates[c->update], transfers[c->transfer], xpic, c->flip, c->ppc, c->cfl);
+           update_names[c->update], transfer_names[c->transfer], xpic, c->flip, c->ppc, c->cfl);
 }
 
 const char *sim_advice(const sim *s) {

@@ -26,6 +26,8 @@ enum side_kind { SIDE_FREE, SIDE_WALL, SIDE_PERIODIC };
 ** half of the step with the grid velocity at its start and half with
 ** MUSL's at its end (USAVG, usf.c) */
 enum update_kind { UPDATE_USL, UPDATE_MUSL, UPDATE_USAVG };
+/* their names in mvmpm.sim, in enum order, NULL-terminated (sim.c) */
+extern const char *const update_names[];
 /* MUSL's remap at the walls (boundary_remap): auto holds them with
 ** gravity on */
 enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
@@ -39,6 +41,8 @@ enum body_rule { BODY_NODE, BODY_PATCH };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
+/* their names in mvmpm.sim, in enum order, NULL-terminated (sim.c) */
+extern const char *const transfer_names[];
 /* how contact normals are taken (contact.c): each field's mass or volume
 ** gradient against the others', the larger volume gradient's direction
 ** for both sides, or the least-squares plane between the particles */

@@ -280,8 +280,6 @@ int lsim_new(lua_State *L) {
       "wall_remap", "wall_contact", "body_contact", "normals", "normal_window", "normal_patch", "contact_gap",
       "xpic", "bond_release", "bond_traction", "bond_length", "bond_energy", "dim",
       NULL};
-  static const char *const updates[] = {"usl", "musl", "usavg", NULL};
-  static const char *const transfers[] = {"flip", "apic", "xpic", NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   static const char *const gapopt[] = {"touch", "step", NULL};
@@ -410,8 +408,8 @@ int lsim_new(lua_State *L) {
     }
     ls->ok = 1;
     s = &ls->s;
-    s->cfg.update = chk_option(L, 1, what, "update", UPDATE_MUSL, updates);
-    s->cfg.transfer = chk_option(L, 1, what, "transfer", TRANSFER_FLIP, transfers);
+    s->cfg.update = chk_option(L, 1, what, "update", UPDATE_MUSL, update_names);
+    s->cfg.transfer = chk_option(L, 1, what, "transfer", TRANSFER_FLIP, transfer_names);
     {
       double m = chk_num(L, 1, what, "xpic", 2, 2, 3, 0);
       if (m != 2 && m != 3)
@@ -1035,9 +1033,7 @@ static int lindex(lua_State *L) {
     setnum(L, "grid", (double)grid_mem(&s->g));
   }
   else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
-  else if (strcmp(k, "update") == 0) lua_pushstring(L, s->cfg.update == UPDATE_MUSL    ? "musl"
-                                          : s->cfg.update == UPDATE_USAVG ? "usavg"
-                                                                      : "usl");
+  else if (strcmp(k, "update") == 0) lua_pushstring(L, update_names[s->cfg.update]);
   else if (strcmp(k, "shape") == 0) lua_pushstring(L, shape_names[s->cfg.shape]);
   else if (strcmp(k, "ignition_time") == 0) {
     if (s->t_ignition < INFINITY) lua_pushnumber(L, s->t_ignition);
@@ -1047,9 +1043,7 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "reaction_tol") == 0) lua_pushnumber(L, s->cfg.react_tol);
   else if (strcmp(k, "reacted") == 0) lua_pushnumber(L, react_mean(s));
   else if (strcmp(k, "reaction_substeps") == 0) lua_pushinteger(L, s->react_nsub);
-  else if (strcmp(k, "transfer") == 0)
-    lua_pushstring(L, s->cfg.transfer == TRANSFER_APIC ? "apic"
-                      : s->cfg.transfer == TRANSFER_XPIC ? "xpic" : "flip");
+  else if (strcmp(k, "transfer") == 0) lua_pushstring(L, transfer_names[s->cfg.transfer]);
   else {
     static const char *const fields[] = {
         "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "wall_advice", "cell",

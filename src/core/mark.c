@@ -68,9 +68,14 @@ static int room(marks *mk, int np) {
 }
 
 /* Part t's marks of the particles [i0, i1) in one pass (split: only the
-** node rows this pass writes).  Particles sorted by cell come in runs
-** with the same first node and field: marking again is a no-op, so a run
-** is marked once. */
+** node rows this pass writes).  A stencil marked once for a field is
+** marked: marking it again is a no-op, so the last MARK_SEEN stencils
+** (first node and field) are remembered and skipped.  Particles sorted
+** by cell repeat them closely: with linear hats a cell's particles share
+** one stencil; with 3-node stencils (which start at the node below the
+** particle's half cell) a cell's 2 x 2 particles have four, and the next
+** cell's repeat two of them. */
+#define MARK_SEEN 4
 STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
                               int pass, size_t i0, size_t i1) {
   sim_work *wk = &s->work;
@@ -82,10 +87,12 @@ STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
   const int nw = shape_width(kind);
   int32_t *owner = g->owner, *head = g->head, *mf = mk->field, *mn = mk->next;
   size_t used = mk->used[t], nev = mk->nev[t], i;
-  int32_t last = -1, lastf = -1;
+  int32_t seen[MARK_SEEN], seenf[MARK_SEEN]; /* a ring; -1: none */
+  int oldest = 0;
   unsigned char mine[SHAPE_MAXW];
   stencil_geo geo;
   stencil_geo_init(&geo, g);
+  for (i = 0; i < MARK_SEEN; i++) seen[i] = seenf[i] = -1;
   for (i = i0; i < i1; i++) {
     int32_t f = bd[ps->body[i]].field, ix[DIM][SHAPE_MAXW], n0;
     int first[DIM], c, d;
@@ -100,9 +107,14 @@ STENCIL_INLINE void mark_kind(sim *s, const int kind, int split, int t,
       for (d = 0; d < DIM; d++) i0n[d] = ix[d][0];
       n0 = grid_node(g, i0n);
     }
-    if (n0 == last && f == lastf) continue;
-    last = n0;
-    lastf = f;
+    {
+      int q;
+      for (q = 0; q < MARK_SEEN && (seen[q] != n0 || seenf[q] != f); q++) {}
+      if (q < MARK_SEEN) continue;
+      seen[oldest] = n0;
+      seenf[oldest] = f;
+      oldest = (oldest + 1) % MARK_SEEN;
+    }
     if (split && !bands_rows(&wk->bands, &geo, kind, ps->x[BANDS_DIM][i], t,
                              pass, mine))
       continue;

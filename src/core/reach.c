@@ -61,60 +61,88 @@ static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
   }
 }
 
-/* the reach of particle i into the slots of its shared stencil nodes;
-** with a plan (blk >= 0), only into the node rows this pass writes */
-static void shared(sim *s, size_t i, int blk, int pass) {
-  const sim_cfg *cfg = &s->cfg;
-  sim_work *wk = &s->work;
+/* The reach of particle i into the slots of its shared stencil nodes;
+** with a plan (mine != NULL), only into the node rows this pass writes.
+** Compiled per shape kind, with the node indices and the offsets to the
+** particle taken along each axis once: most stencil nodes are not
+** shared, and for them the test of head is all the work. */
+STENCIL_INLINE void shared_kind(sim *s, const int kind,
+                                const stencil_geo *geo, size_t i,
+                                const unsigned char *mine) {
   const grid *g = &s->g;
   const particles *ps = &s->ps;
-  const bands *b = &wk->bands;
-  const double l = cfg->lp * g->h;
-  int32_t node[STENCIL_MAX];
-  double x[DIM];
-  int nn, d, k;
-  for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
-  nn = stencil_nodes(g, cfg->shape, x, node);
-  for (k = 0; k < nn; k++) {
-    int32_t n = node[k], sl;
-    double e = 0, nrm1 = 0;
-    int ix[DIM];
-    if (g->head[n] < 0) continue;
-    grid_ijk(g, n, ix);
-    if (blk >= 0 && (b->first[ix[BANDS_DIM]] == blk) != (pass == 1)) continue;
-    sl = grid_slot(g, n, s->bodies[ps->body[i]].field);
-    for (d = 0; d < DIM; d++) {
+  const int32_t *head = g->head;
+  const double l = s->cfg.lp * g->h;
+  const int nw = shape_width(kind);
+  int32_t idx[DIM][SHAPE_MAXW], f = -1;
+  double dx[DIM][SHAPE_MAXW];
+  int t[DIM], nn = 1, d, a, k;
+  for (d = 0; d < DIM; d++) {
+    double x = ps->x[d][i];
+    int i0 = stencil_first(geo, kind, d, x);
+    for (a = 0; a < nw; a++) {
       /* node position on the particle's side of any periodic seam */
-      double xn = grid_x(g, d, ix[d]);
-      double dx = x[d] - xn;
+      int ia = stencil_wrap(geo, d, i0 + a);
+      double r = x - grid_x(g, d, ia);
       if (g->periodic[d]) {
         double L = g->hi[d] - g->lo[d];
-        if (dx > 0.5 * L) dx -= L;
-        else if (dx < -0.5 * L) dx += L;
+        if (r > 0.5 * L) r -= L;
+        else if (r < -0.5 * L) r += L;
       }
-      e += dx * g->sn[d][sl];
-      nrm1 += fabs(g->sn[d][sl]);
+      idx[d][a] = ia;
+      dx[d][a] = r;
     }
-    e += l * nrm1;
-    if (e > g->sext[sl]) g->sext[sl] = e;
+    t[d] = 0;
+    nn *= nw;
+  }
+  /* an odometer over the DIM indices, x fastest */
+  for (k = 0; k < nn; k++) {
+    int in[DIM];
+    int32_t n;
+    for (d = 0; d < DIM; d++) in[d] = idx[d][t[d]];
+    n = grid_node(g, in);
+    if (head[n] >= 0 && (!mine || mine[t[BANDS_DIM]])) {
+      double e = 0, nrm1 = 0;
+      int32_t sl;
+      if (f < 0) f = s->bodies[ps->body[i]].field;
+      sl = grid_slot(g, n, f);
+      for (d = 0; d < DIM; d++) {
+        e += dx[d][t[d]] * g->sn[d][sl];
+        nrm1 += fabs(g->sn[d][sl]);
+      }
+      e += l * nrm1;
+      if (e > g->sext[sl]) g->sext[sl] = e;
+    }
+    for (d = 0; d < DIM && ++t[d] == nw; d++) t[d] = 0;
   }
 }
 
-/* Part t of the scatter plan p2g made (the particles have not moved
-** since): a maximum does not depend on the order it is taken in, and in
-** a pass no two parts write one node row, so no two threads write one
-** slot */
-static void shared_span(void *arg, size_t i0, size_t i1, int t, int pass) {
-  sim *s = arg;
-  const sim_cfg *cfg = &s->cfg;
+/* particles [i0, i1): part t of the scatter plan p2g made in pass pass
+** (the particles have not moved since), or all (t < 0) */
+STENCIL_INLINE void shared_range(sim *s, const int kind, size_t i0,
+                                 size_t i1, int t, int pass) {
   sim_work *wk = &s->work;
   stencil_geo geo;
   unsigned char mine[SHAPE_MAXW];
   size_t i;
   stencil_geo_init(&geo, &s->g);
-  for (i = i0; i < i1; i++)
-    if (bands_rows(&wk->bands, &geo, cfg->shape, s->ps.x[BANDS_DIM][i], t, pass, mine))
-      shared(s, i, t, pass);
+  for (i = i0; i < i1; i++) {
+    if (t < 0) shared_kind(s, kind, &geo, i, NULL);
+    else if (bands_rows(&wk->bands, &geo, kind, s->ps.x[BANDS_DIM][i], t,
+                        pass, mine))
+      shared_kind(s, kind, &geo, i, mine);
+  }
+}
+
+/* A maximum does not depend on the order it is taken in, and in a pass
+** no two parts write one node row, so no two threads write one slot */
+static void shared_span(void *arg, size_t i0, size_t i1, int t, int pass) {
+  sim *s = arg;
+  switch (s->cfg.shape) {
+  case SHAPE_GIMP: shared_range(s, SHAPE_GIMP, i0, i1, t, pass); break;
+  case SHAPE_BSPLINE2: shared_range(s, SHAPE_BSPLINE2, i0, i1, t, pass); break;
+  default: shared_range(s, SHAPE_LINEAR, i0, i1, t, pass);
+  }
 }
 
 /* The walls, part t of the particles: part 0 into the sides' own
@@ -160,7 +188,6 @@ void reach(sim *s) {
   const particles *ps = &s->ps;
   const bands *b = &wk->bands;
   int k, anywall = 0;
-  size_t i;
   for (k = 0; k < NSIDES; k++) anywall |= s->sides[k].kind == SIDE_WALL;
   if (anywall) {
     par_run(wk->par, walls_part, s);
@@ -169,5 +196,5 @@ void reach(sim *s) {
   if (!s->g.nshared) return;
   if (b->nb) bands_run(b, wk->par, shared_span, s);
   else
-    for (i = 0; i < ps->n; i++) shared(s, i, -1, 1);
+    shared_span(s, 0, ps->n, -1, 1);
 }

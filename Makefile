@@ -331,11 +331,16 @@ check-paraview: $(BIN) deps-paraview
 	done
 
 # the granular shear cell (docs/shear.md) at the report's resolution, both
-# scenes and both bond strengths, in the background:
+# scenes and both bond strengths, on the scenes' linear hats and on the
+# default shape (B-splines), in the background (a run's options: + for a
+# space):
 #   make shear; tail -f out/shear.log
 SHEAR_RUNS = shear_dry:scenarios/shear_dry.lua: \
              shear_binder:scenarios/shear_binder.lua: \
-             shear_binder_bond0:scenarios/shear_binder.lua:--set=bond=0
+             shear_binder_bond0:scenarios/shear_binder.lua:--set=bond=0 \
+             bspline2/shear_dry:scenarios/shear_dry.lua:--set=shape=bspline2 \
+             bspline2/shear_binder:scenarios/shear_binder.lua:--set=shape=bspline2 \
+             bspline2/shear_binder_bond0:scenarios/shear_binder.lua:--set=shape=bspline2+--set=bond=0
 # hot-spot figures (docs/hotspots.md): the sliding block, the shear cell
 # with binder at 100 cells with heat, and a small PBX bed (0.24 mm,
 # grains at 0.35 of the default sizes, 3 cells across the smallest)
@@ -365,7 +370,7 @@ shear: $(BIN)
 	@mkdir -p out
 	nohup sh -c 'for r in $(SHEAR_RUNS); do \
 	  name=$${r%%:*}; rest=$${r#*:}; scene=$${rest%%:*}; opt=$${rest#*:}; \
-	  ./$(BIN) run $$scene $$opt --out out/$$name --overwrite --quiet || exit 1; \
+	  ./$(BIN) run $$scene $$(echo "$$opt" | tr + " ") --out out/$$name --overwrite --quiet || exit 1; \
 	  mkdir -p docs/figures/shear/$$name; \
 	  cp out/$$name/*.png out/$$name/summary.txt out/$$name/locking.csv docs/figures/shear/$$name/; \
 	done; echo shear runs done' > out/shear.log 2>&1 &

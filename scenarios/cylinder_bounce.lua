@@ -24,6 +24,9 @@ local P = mvmpm.params {
   separation = true,   -- contact only once surfaces meet
   wall_contact = "node", -- or "patch": the wall acts per contact patch;
                          -- "couple": ... with friction at the wall line
+                         -- "penalty": the walls push the particles that
+                         -- reach them (docs/lua-api.md)
+  wall_stiffness = 2,    -- "penalty": the springs' stiffness (sim.wall_stiffness)
   contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
 }
 
@@ -43,6 +46,7 @@ local sim = mvmpm.sim {
   sides = {"wall", friction = P.friction},
   contact = {separation = P.separation},
   wall_contact = P.wall_contact,
+  wall_stiffness = P.wall_stiffness,
   contact_gap = opt(P.contact_gap),
 }
 

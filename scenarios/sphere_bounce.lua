@@ -25,7 +25,9 @@ local P = mvmpm.params {
   shape = "default",   -- or "linear", "gimp", "bspline2"
   transfer = "default", -- or "flip", "apic" (gimp or bspline2), "xpic"
   xpic = 2,            -- XPIC's order (2 or 3)
-  wall_contact = "node", -- or "patch", "couple"
+  wall_contact = "node", -- or "patch", "couple", "penalty" (the walls push
+                         -- the particles that reach them: docs/lua-api.md)
+  wall_stiffness = 2,    -- "penalty": the springs' stiffness (sim.wall_stiffness)
   contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
 }
 
@@ -45,6 +47,7 @@ local sim = mvmpm.sim {
   t_end = P.t_end,
   sides = {"wall", friction = P.friction},
   wall_contact = P.wall_contact,
+  wall_stiffness = P.wall_stiffness,
   contact_gap = opt(P.contact_gap),
 }
 

@@ -680,6 +680,9 @@ static int cmd_run(int argc, char **argv) {
              "%.6g\n", s->e.plastic, s->e.viscous, s->e.thermal,
              s->e.settled);
     if (s->nremoved) printf("%zu particles left the domain and were removed\n", s->nremoved);
+    if (s->nheld)
+      printf("%zu particle moves were held at a penalty wall (its spring too "
+             "soft for the load: raise wall_stiffness)\n", s->nheld);
     printf("output: %s/ (particles.xmf, %d snapshots, diagnostics.csv)\n",
            ls->outdir, ls->nsnap);
   }

@@ -85,26 +85,37 @@ double g2p_affine_energy(const sim *s) {
 /* the sums of one chunk of particles (par.h), kept in s->work.red */
 typedef struct sums {
   double ke, mom[DIM], am[3], v2max, pe, loss;
-  size_t out;
+  size_t out, held;
 } sums;
 _Static_assert(sizeof(sums) <= SIM_RED_BYTES, "sums fit SIM_RED_BYTES");
 
 /* the domain as settle needs it, copied into a local like stencil_geo */
 typedef struct box {
   double lo[DIM], hi[DIM], inv_h, grav[DIM];
+  double in[DIM];    /* how far inside a held particle is put */
   int32_t cells[DIM];
   int periodic[DIM];
+  int hold[NSIDES];  /* a penalty wall: particles are held inside */
+  int anyhold;
 } box;
 
-STENCIL_INLINE void box_init(box *bx, const grid *g, const double *grav) {
-  int d;
+STENCIL_INLINE void box_init(box *bx, const sim *s) {
+  const grid *g = &s->g;
+  int d, k;
   bx->inv_h = g->inv_h;
   for (d = 0; d < DIM; d++) {
-    bx->grav[d] = grav[d];
+    bx->grav[d] = s->cfg.gravity[d];
     bx->lo[d] = g->lo[d];
     bx->hi[d] = g->hi[d];
+    bx->in[d] = 1e-9 * g->h;
     bx->cells[d] = g->cells[d];
     bx->periodic[d] = g->periodic[d];
+  }
+  bx->anyhold = 0;
+  for (k = 0; k < NSIDES; k++) {
+    bx->hold[k] = s->cfg.wall_rule == WALL_PENALTY &&
+                  s->sides[k].kind == SIDE_WALL && !s->sides[k].mirror;
+    bx->anyhold |= bx->hold[k];
   }
 }
 
@@ -120,6 +131,17 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
       if (x >= bx->hi[d]) x -= L;
       else if (x < bx->lo[d]) x += L;
       ps->x[d][i] = x;
+    } else if (bx->anyhold) {
+      /* a penalty wall's spring too soft for the impact: the particle
+      ** would leave the domain (and be dropped); it is held at the wall
+      ** line instead, and counted (wall_penalty.c) */
+      if (bx->hold[2 * d + 1] && x >= bx->hi[d] - bx->in[d]) {
+        x = ps->x[d][i] = bx->hi[d] - bx->in[d];
+        u->held++;
+      } else if (bx->hold[2 * d] && x < bx->lo[d]) {
+        x = ps->x[d][i] = bx->lo[d];
+        u->held++;
+      }
     }
     /* r >= 0 once x >= lo, so the cell is (int) r; r < cells also
     ** catches x just below hi rounding up to the next cell */
@@ -183,7 +205,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   int a, c;
   for (a = 0; a < DIM; a++) { gq[a] = g->q[a]; gf[a] = g->f[a]; gp[a] = g->p[a]; }
   stencil_geo_init(&geo, g);
-  box_init(&bx, g, cfg->gravity);
+  box_init(&bx, s);
   if (apic)
     for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   for (i = i0; i < i1; i++) {
@@ -433,15 +455,18 @@ static void finish(sim *s) {
     for (d = 0; d < 3; d++) u.am[d] += red[c].am[d];
     u.pe += red[c].pe;
     u.out += red[c].out;
+    u.held += red[c].held;
     u.loss += red[c].loss;
     if (red[c].v2max > u.v2max) u.v2max = red[c].v2max;
   }
   s->e.kinetic = u.ke;
   s->e.potential = u.pe;
+  s->e.wall_spring = wall_penalty_energy(s); /* at the moved positions */
   for (d = 0; d < DIM; d++) s->e.mom[d] = u.mom[d];
   for (d = 0; d < 3; d++) s->e.angmom[d] = u.am[d];
   s->vmax = sqrt(u.v2max);
   s->nout = u.out;
+  s->nheld += u.held;
   s->e.transfer += u.loss;
 }
 
@@ -517,7 +542,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   int a, c;
   for (a = 0; a < DIM; a++) { gp[a] = g->p[a]; gq[a] = g->q[a]; }
   stencil_geo_init(&geo, g);
-  box_init(&bx, g, cfg->gravity);
+  box_init(&bx, s);
   for (i = i0; i < i1; i++) {
     double x[DIM], v[DIM] = {0}, l[NTENS] = {0};
     int32_t f = bd[ps->body[i]].field, slot[STENCIL_MAX];

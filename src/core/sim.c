@@ -36,6 +36,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->fcoh = -1;
   s->fopen = -1;
   s->cfg.mcut_rel = 1e-9;
+  s->cfg.wall_stiffness = 2;
   s->cfg.sort_every = 20;
   s->cfg.ppc = ppc;
   s->cfg.lp = 0.5 / ppc;
@@ -273,7 +274,7 @@ const char *sim_advice(const sim *s) {
 ** the disc back, and it slides where it would roll. */
 const char *sim_wall_advice(const sim *s) {
   int k;
-  if (s->cfg.wall_rule != WALL_NODE) return NULL;
+  if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, couple, penalty */
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
     if (sd->kind == SIDE_WALL && !sd->mirror && sd->mu > 0)
@@ -399,6 +400,7 @@ void sim_measure(sim *s) {
   s->e.kinetic = ke + g2p_affine_energy(s);
   s->e.strain = se;
   s->e.potential = pe;
+  s->e.wall_spring = wall_penalty_energy(s);
   for (d = 0; d < 3; d++) s->e.angmom[d] = am[d];
   s->vmax = sqrt(v2max);
 }
@@ -424,7 +426,7 @@ int sim_wall_hold(const sim *s) {
 }
 
 double sim_total(const sim *s) {
-  return s->e.kinetic + s->e.strain + s->e.potential + s->e.lag;
+  return s->e.kinetic + s->e.strain + s->e.potential + s->e.lag + s->e.wall_spring;
 }
 
 double sim_residual(const sim *s) {

@@ -33,8 +33,10 @@ extern const char *const update_names[];
 enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* how a wall acts on the nodes where material touches it (boundary.c) */
 /* ... WALL_COUPLE: the patch rule with sliding friction put at the wall
-** line by a couple on the first node line inside (boundary.c) */
-enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE };
+** line by a couple on the first node line inside (boundary.c);
+** WALL_PENALTY: on the particles that pass the wall line, a spring and
+** Coulomb friction (wall_penalty.c) */
+enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY };
 /* how contact between two bodies acts: node by node (contact.c) or one
 ** velocity change per side over each contact patch (contact_patch.c) */
 enum body_rule { BODY_NODE, BODY_PATCH };
@@ -98,6 +100,7 @@ typedef struct sim_energy {
   double kinetic, strain;
   double potential;  /* of gravity, -sum m g.x: zero without gravity */
   double lag;        /* -dt/2 sum V sigma:D: see sim_total */
+  double wall_spring; /* stored in the walls' springs (wall_penalty.c) */
   double friction;   /* work dissipated by friction (walls + contacts) */
   double boundary;   /* work done on the material by walls / driven bodies */
   double plastic;    /* plastic work (mat_plastic.c) */
@@ -165,6 +168,8 @@ typedef struct sim_cfg {
   int gap_step;      /* ... judged at the step's end (contact.c closing) */
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
   int wall_rule;     /* enum wall_rule: node by node or per contact patch */
+  double wall_stiffness; /* WALL_PENALTY: the spring over the particle
+                     ** material's P-wave modulus per particle size */
   int body_rule;     /* enum body_rule: the same between bodies */
   int normals;       /* enum normals_kind: how contact normals are taken */
   int normal_window; /* ... from the shared nodes within this many cells */
@@ -266,6 +271,8 @@ typedef struct sim {
   double mcut;       /* nodal masses below this are empty (cfg.mcut_rel
                         times the lightest particle, sim_begin) */
   size_t nremoved;   /* particles that left the domain */
+  size_t nheld;      /* particle moves held inside at a penalty wall
+                     ** (wall_penalty.c: its spring too soft) */
   sim_energy e;
   int ftemp;         /* particle field "temperature", -1 if no scene uses it */
   int temp_on;       /* a uniform temperature is imposed (thermal.c) */
@@ -406,6 +413,10 @@ void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
                                   remapped velocity (MUSL) */
 void book_finish(sim *s);     /* book.c: impulses' work, second half */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
+/* wall_penalty.c: the penalty walls' forces on the particles, onto q;
+** the energy stored in their springs */
+void wall_penalty(sim *s);
+double wall_penalty_energy(const sim *s);
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */
 /* boundary.c: at every node where a wall acted this step, the normal
 ** component of the node array a and of its slots' array sa set to the

@@ -213,6 +213,11 @@ static void visit_sim(ckv *v, sim *s) {
   vreal(v, "vmax", &s->vmax);
   VI(v, "nout", s->nout, size_t);
   VI(v, "nremoved", s->nremoved, size_t);
+  { /* added later: a checkpoint from before has none */
+    double held = (double)s->nheld;
+    vreal_opt(v, "nheld", &held, 0);
+    s->nheld = held >= 0 && held < 1e18 ? (size_t)held : 0;
+  }
   VI(v, "ncut", s->ncut, size_t);
   VI(v, "ncut_total", s->ncut_total, size_t);
   vreal(v, "bond_area", &s->bond_area);

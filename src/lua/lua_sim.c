@@ -277,13 +277,13 @@ int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
       "contact", "fields", "units", "sort_every", "mass_cutoff", "threads",
-      "wall_remap", "wall_contact", "body_contact", "normals", "normal_window", "normal_patch", "contact_gap",
+      "wall_remap", "wall_contact", "wall_stiffness", "body_contact", "normals", "normal_window", "normal_patch", "contact_gap",
       "xpic", "bond_release", "bond_traction", "bond_length", "bond_energy", "dim",
       NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
   static const char *const remapopt[] = {"auto", "hold", "free", NULL};
   static const char *const gapopt[] = {"touch", "step", NULL};
-  static const char *const wallopt[] = {"node", "patch", "couple", NULL};
+  static const char *const wallopt[] = {"node", "patch", "couple", "penalty", NULL};
   static const char *const bodyopt[] = {"node", "patch", NULL};
   static const char *const releaseopt[] = {"open", "contact", NULL};
   static const char *const tractionopt[] = {"mixture", "fit", NULL};
@@ -447,6 +447,13 @@ int lsim_new(lua_State *L) {
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
     s->cfg.wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
     s->cfg.wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
+    s->cfg.wall_stiffness = chk_num(L, 1, what, "wall_stiffness", 2, 0.01, 16, 0);
+    if (s->cfg.wall_rule == WALL_PENALTY)
+      for (k = 0; k < NSIDES; k++)
+        if (s->sides[k].kind == SIDE_WALL && !s->sides[k].mirror && s->sides[k].mu > 0)
+          chk_error(L, "%s: wall_contact = \"penalty\" takes frictionless walls; "
+                       "side '%s' has friction %g (use \"patch\" for walls with "
+                       "friction)", what, lsim_side_names[k], s->sides[k].mu);
     s->cfg.body_rule = chk_option(L, 1, what, "body_contact", BODY_NODE, bodyopt);
     s->cfg.normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
     s->cfg.gap_step = chk_option(L, 1, what, "contact_gap", s->cfg.gap_step, gapopt);
@@ -771,6 +778,9 @@ static int lenergy(lua_State *L) {
   setnum(L, "kinetic", s->e.kinetic);
   setnum(L, "strain", s->e.strain);
   setnum(L, "potential", s->e.potential);
+  setnum(L, "wall_spring", s->e.wall_spring);
+  lua_pushinteger(L, (lua_Integer)s->nheld);
+  lua_setfield(L, -2, "wall_held");
   setnum(L, "dissipated", s->e.friction);
   setnum(L, "plastic", s->e.plastic);
   setnum(L, "viscous", s->e.viscous);
@@ -919,6 +929,9 @@ static int lwall_nodes(lua_State *L) {
   if (k == NSIDES)
     luaL_error(L, "wall_nodes: no side '%s' (the sides are left, right, "
                   "bottom, top%s)", name, DIM == 3 ? ", back, front" : "");
+  if (ls->s.cfg.wall_rule == WALL_PENALTY && !ls->s.sides[k].mirror)
+    luaL_error(L, "wall_nodes: under wall_contact = \"penalty\" the walls push "
+                  "particles, not nodes; sim:wall_force('%s') gives the force", name);
   if (diag_wall(&ls->s, k, &w, &n)) return luaL_error(L, "%s", ls->s.err);
   lua_createtable(L, 0, DIM + 1);
   for (d = 0; d <= DIM; d++) {

@@ -1,0 +1,175 @@
+-- Penalty walls (sim.wall_contact = "penalty", src/core/wall_penalty.c):
+-- frictionless walls that push each particle passing the wall line with
+-- a spring, k = wall_stiffness * (K + 4G/3) * (2l)^(DIM-2), instead of
+-- stopping the nodes that approach.
+--
+-- 1. The report's frictionless bounce (scenarios/cylinder_bounce.lua,
+--    the default shape) at 8, 16, 32 cells per diameter.  Reference: the
+--    walls do no work, so E/E0 = 1 after the first impact (t = 10) and
+--    after three (t = 36); the goal of the contact work is <= 2 %, 1 %,
+--    0.5 % at 8, 16, 32 cells.  Measured with the node rule (the
+--    default): -2.3 / -1.1 / -0.3 % after the first impact, -5.6 / -2.9
+--    / +0.5 % after three (tests/verify/bounce_convergence.lua).
+-- 2. Momentum: the walls' forces (sim:wall_force) are the only external
+--    ones, so the momentum's change is their impulse, to round-off with
+--    no mass cutoff.
+-- 3. A block resting on the floor under gravity: the floor carries its
+--    weight, and it stays at rest.
+-- 4. The 3-D sphere bounce (scenarios/sphere_bounce.lua), 8 cells.
+-- 5. One and two threads give the same bits; bad input is refused.
+local mvmpm = require "mvmpm"
+local V = require "mvmpm.verify"
+
+local function bounce(cells, o)
+  local p = {cells = cells, t_end = 36, wall_contact = "penalty"}
+  for k, v in pairs(o or {}) do p[k] = v end
+  local sim = mvmpm.load("scenarios/cylinder_bounce.lua", p)
+  local disc = sim:bodies()[1]
+  local e0 = sim:energy().total
+  sim:run(10)
+  local r = {first = sim:energy().total / e0 - 1, rest = -disc:diag().vx / 0.1}
+  sim:run(36)
+  local e = sim:energy()
+  r.three, r.held, r.residual = e.total / e0 - 1, e.wall_held, e.residual / e0
+  r.sim = sim
+  return r
+end
+
+V.case "frictionless bounce, penalty walls, default shape: 8, 16, 32 cells"
+local lim = {[8] = 0.02, [16] = 0.01, [32] = 0.005}
+local res = {}
+for _, c in ipairs {8, 16, 32} do
+  local r = bounce(c)
+  res[c] = r
+  -- measured -0.51 / -0.19 / -0.20 % (node rule -2.3 / -1.1 / -0.32 %)
+  V.below(string.format("%d cells: |E/E0 - 1| after the first impact", c), math.abs(r.first), 0.01)
+  -- measured -1.42 / -0.31 / +0.497 %: the goal is met at 8 and 16
+  -- cells and at 32 only just (the flights' FLIP gain, not the impacts:
+  -- the first impact loses 0.2 % there), so at 32 it is printed and 1 %
+  -- asserted
+  V.info(string.format("%d cells: goal |E/E0 - 1| <= %g after three impacts: %s", c, lim[c],
+                       math.abs(r.three) <= lim[c] and "met" or "NOT met"), r.three)
+  V.below(string.format("%d cells: |E/E0 - 1| after three impacts", c), math.abs(r.three),
+          c == 32 and 0.01 or lim[c])
+  V.info(string.format("%d cells: restitution, impact 1", c), r.rest)
+  V.below(string.format("%d cells: budget residual / E0 (the springs' energy in the total)", c),
+          math.abs(r.residual), 0.02)
+  V.holds(string.format("%d cells: no particle held at a wall (spring stiff enough)", c), r.held == 0, r.held)
+end
+V.below("first impact's loss falls 8 -> 16 cells", math.abs(res[16].first), math.abs(res[8].first))
+V.info("observed order of the three impacts' error, 8 -> 16",
+       math.log(math.abs(res[8].three) / math.abs(res[16].three), 2))
+V.info("observed order of the three impacts' error, 16 -> 32",
+       math.log(math.abs(res[16].three) / math.abs(res[32].three), 2))
+V.holds("no warning for the default shape with penalty walls", res[8].sim.advice == nil)
+
+V.case "against the node rule at 8 cells (the same scene)"
+do
+  local p = {cells = 8, t_end = 10}
+  local sim = mvmpm.load("scenarios/cylinder_bounce.lua", p)
+  local e0 = sim:energy().total
+  sim:run(10)
+  local node = sim:energy().total / e0 - 1
+  V.info("node rule, 8 cells: E/E0 - 1 after the first impact", node)
+  -- measured 0.22 of it
+  V.below("penalty loses less than a third of the node rule at the first impact",
+          math.abs(res[8].first), math.abs(node) / 3)
+end
+
+V.case "momentum: the change is the walls' impulse"
+for _, cut in ipairs {0, 1e-9} do
+  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
+                         t_end = 4, wall_contact = "penalty", mass_cutoff = cut}
+  local b = sim:body {shape = mvmpm.disk {center = {0.7, 0.4}, radius = 0.2},
+                      material = mvmpm.elastic {K = 10, G = 5, density = 1}, velocity = {0.4, -0.3}}
+  local m = b:mass()
+  local px0, py0 = b:diag().vx * m, b:diag().vy * m
+  local ix, iy, worst, tot = 0, 0, 0, 0
+  sim:every {steps = 1, fn = function(s)
+    for _, side in ipairs {"left", "right", "bottom", "top"} do
+      local wx, wy = s:wall_force(side)
+      ix, iy = ix + wx * s.dt, iy + wy * s.dt
+      tot = tot + (math.abs(wx) + math.abs(wy)) * s.dt
+    end
+    local d = b:diag()
+    worst = math.max(worst, math.abs(d.vx * m - px0 - ix), math.abs(d.vy * m - py0 - iy))
+  end}
+  sim:run()
+  -- four impacts, each about 2 m v: the impulses' total is no small number
+  V.above("sum of the walls' |impulses| / (m v0), mass_cutoff " .. cut, tot / (m * 0.5), 2)
+  local what = string.format("mass_cutoff %g: max |momentum change - impulse| / (m v0)", cut)
+  if cut == 0 then V.below(what, worst / (m * 0.5), 1e-9)
+  else V.info(what, worst / (m * 0.5)) end
+end
+
+V.case "a block at rest on the floor under gravity"
+do
+  local sim = mvmpm.sim {domain = {x = {0, 2}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
+                         t_end = 6, gravity = {0, -1}, wall_contact = "penalty"}
+  local b = sim:body {shape = mvmpm.rect {lo = {0.5, 0}, hi = {1.5, 0.5}},
+                      material = mvmpm.elastic {K = 100, G = 50, density = 1}}
+  local w = b:mass()
+  local fy, T, ke = 0, 0, 0
+  sim:every {steps = 1, fn = function(s)
+    if s.t > 3 then
+      local _, f = s:wall_force("bottom")
+      fy, T = fy + f * s.dt, T + s.dt
+      ke = math.max(ke, s:energy().kinetic)
+    end
+  end}
+  sim:run()
+  V.near("time mean of the floor's force / weight, t = 3 .. 6", fy / T / w, 1, 0.01)
+  -- gravity switched on at t = 0 sets the block vibrating, and nothing
+  -- damps it; a load applied at once gives a linear body at most its
+  -- static strain energy U as kinetic energy.  U of the block's own
+  -- sag, uniaxial in plane strain: (rho g)^2 H^3 W / (6 E'), E' = E /
+  -- (1 - nu^2); the springs' sag adds little (k per particle 2 x 166.7)
+  local E, nu = 9 * 100 * 50 / (300 + 50), (300 - 100) / (2 * 350)
+  local U = 0.5 ^ 3 * 1 / (6 * E / (1 - nu * nu))
+  V.below("largest kinetic energy / static strain energy U, t = 3 .. 6", ke / U, 4)
+  V.holds("no particle held", sim:energy().wall_held == 0, sim:energy().wall_held)
+  V.below("block's centre within a hundredth of a cell of its start (x)",
+          math.abs(b:diag().x - 1), 0.01 / 16)
+end
+
+V.case "3-D: the sphere bounce at 8 cells"
+do
+  local sim = mvmpm.load("scenarios/sphere_bounce.lua", {cells = 8, wall_contact = "penalty"})
+  local e0 = sim:energy().total
+  sim:run(14)
+  local e = sim:energy()
+  -- measured +0.92 % (node rule -6.2 %)
+  V.below("3-D, 8 cells: |E/E0 - 1| after three impacts", math.abs(e.total / e0 - 1), 0.02)
+  V.holds("3-D: no particle held", e.wall_held == 0, e.wall_held)
+end
+
+V.case "threads and input"
+do
+  local function run(th)
+    local sim = mvmpm.load("scenarios/cylinder_bounce.lua", {cells = 8, t_end = 8, wall_contact = "penalty"})
+    sim.threads = th
+    sim:run(8)
+    local e = sim:energy()
+    return e.total, e.wall_spring, e.px
+  end
+  local a1, b1, c1 = run(1)
+  local a2, b2, c2 = run(2)
+  V.holds("1 and 2 threads: the same energy, spring energy and momentum, bit for bit",
+          a1 == a2 and b1 == b2 and c1 == c2)
+end
+local function refused(o, pat)
+  local p = {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "penalty"}
+  for k, v in pairs(o) do p[k] = v end
+  local ok, msg = pcall(mvmpm.sim, p)
+  return not ok and msg:find(pat, 1, true) ~= nil, msg
+end
+V.holds("a penalty wall with friction is refused, naming the side",
+        (refused({sides = {"wall", friction = 0.2}}, "side 'left' has friction 0.2")))
+V.holds("wall_stiffness out of range is refused, naming the range",
+        (refused({wall_stiffness = 0}, "'wall_stiffness' must be in [0.01, 16]")))
+do
+  local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "penalty", sides = "wall"}
+  local ok, msg = pcall(s.wall_nodes, s, "bottom")
+  V.holds("sim:wall_nodes under penalty walls says why and what to use",
+          not ok and msg:find("wall_force", 1, true) ~= nil)
+end

@@ -89,6 +89,7 @@ void sim_free(sim *s) {
   marks_free(&s->work.marks);
   free(s->work.red);
   free(s->work.wext);
+  free(s->work.pflag);
   free(s->work.wpatch);
   free(s->work.crec);
   free(s->work.cbody);
@@ -122,6 +123,12 @@ int sim_prepare(sim *s) {
   if (!wk->par && !(wk->par = par_new(cfg->threads))) {
     snprintf(s->err, sizeof s->err, "cannot start %d threads", cfg->threads);
     return -1;
+  }
+  if (!wk->pflag && cfg->wall_rule == WALL_PENALTY && sim_wall_hold(s)) {
+    if (!(wk->pflag = calloc(s->g.nnodes, 1))) {
+      snprintf(s->err, sizeof s->err, "out of memory for the penalty walls");
+      return -1;
+    }
   }
   if (!wk->wext && par_threads(wk->par) > 1) { /* reach.c: walls */
     int k;
@@ -646,7 +653,10 @@ int sim_step(sim *s) {
     ** gradient follows what the particles do; the walls only where the
     ** scene holds them (boundary_remap says why and what it costs) */
     solve_remap(s); /* g2p mapped the updated momenta back */
-    if (sim_wall_hold(s)) boundary_remap(s);
+    if (sim_wall_hold(s)) {
+      boundary_remap(s);
+      if (cfg->wall_rule == WALL_PENALTY) wall_penalty_hold(s);
+    }
     book_finish(s); /* on the remapped motion (book.c) */
     if (s->heat) heat_finish(s); /* ... and its heat, before the move */
     if (s->fbond >= 0 && s->g.nshared) bond_remap(s);

@@ -206,6 +206,8 @@ typedef struct sim_work {
   int p2g_what;      /* p2g.c: what its scatter now adds */
   void *red;         /* per-chunk partial sums of the threaded phases */
   size_t redcap;     /* ... its bytes */
+  unsigned char *pflag; /* wall_penalty.c: per node, bit d set where a
+                     ** spring pushed along axis d this step */
   double *wext;      /* reach.c: each thread but the first's copy of the
                         sides' reach arrays, wextn doubles each */
   size_t wextn;
@@ -416,6 +418,7 @@ void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 /* wall_penalty.c: the penalty walls' forces on the particles, onto q;
 ** the energy stored in their springs */
 void wall_penalty(sim *s);
+void wall_penalty_hold(sim *s); /* MUSL, walls held (sim_wall_hold) */
 double wall_penalty_energy(const sim *s);
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */
 /* boundary.c: at every node where a wall acted this step, the normal

@@ -177,6 +177,15 @@ local function refused(o, pat)
 end
 V.holds("a penalty wall with friction is refused, naming the side",
         (refused({sides = {"wall", friction = 0.2}}, "side 'left' has friction 0.2")))
+V.holds("a smoothing transfer (APIC) with penalty walls is refused",
+        (refused({shape = "bspline2", transfer = "apic"}, "needs pure FLIP")))
+V.holds("a FLIP fraction below 1 with penalty walls is refused",
+        (refused({flip = 0.99}, "needs pure FLIP")))
+do
+  local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "penalty", sides = "wall"}
+  local ok, msg = pcall(function() s.flip = 0.99 end)
+  V.holds("setting sim.flip below 1 later is refused too", not ok and msg:find("'flip' must be 1", 1, true) ~= nil)
+end
 V.holds("wall_stiffness out of range is refused, naming the range",
         (refused({wall_stiffness = 0}, "'wall_stiffness' must be in [0.01, 16]")))
 do

@@ -73,16 +73,15 @@ static double stiffness(const sim *s, size_t i) {
 
 /* the force f on particle i onto the updated momenta of the nodes of its
 ** stencil (its field's slot at a shared node), times dt */
-STENCIL_INLINE void spread(sim *s, const int kind, size_t i, const double *f) {
+STENCIL_INLINE void spread(sim *s, const int kind, const stencil_geo *geo,
+                           size_t i, const double *f) {
   grid *g = &s->g;
-  stencil_geo geo;
   stencil st;
   double x[DIM];
   int32_t fld = s->bodies[s->ps.body[i]].field;
   int k, a;
-  stencil_geo_init(&geo, g);
   for (a = 0; a < DIM; a++) x[a] = s->ps.x[a][i];
-  stencil_eval(&geo, kind, x, s->cfg.lp, &st);
+  stencil_eval(geo, kind, x, s->cfg.lp, &st);
   for (k = 0; k < st.n; k++) {
     int32_t n = st.node[k];
     double w = st.w[k] * s->dt;
@@ -97,32 +96,37 @@ STENCIL_INLINE void spread(sim *s, const int kind, size_t i, const double *f) {
   }
 }
 
-static void spread_any(sim *s, size_t i, const double *f) {
+static void spread_any(sim *s, const stencil_geo *geo, size_t i,
+                       const double *f) {
   switch (s->cfg.shape) {
-  case SHAPE_GIMP: spread(s, SHAPE_GIMP, i, f); break;
-  case SHAPE_BSPLINE2: spread(s, SHAPE_BSPLINE2, i, f); break;
-  default: spread(s, SHAPE_LINEAR, i, f);
+  case SHAPE_GIMP: spread(s, SHAPE_GIMP, geo, i, f); break;
+  case SHAPE_BSPLINE2: spread(s, SHAPE_BSPLINE2, geo, i, f); break;
+  default: spread(s, SHAPE_LINEAR, geo, i, f);
   }
 }
 
 void wall_penalty(sim *s) {
   const particles *ps = &s->ps;
+  stencil_geo geo;
+  int sides[NSIDES], ns = 0, j;
   size_t i;
-  int k;
+  for (j = 0; j < NSIDES; j++)
+    if (penalty_side(s, j)) sides[ns++] = j;
+  stencil_geo_init(&geo, &s->g);
   for (i = 0; i < ps->n; i++) {
     double f[DIM] = {0};
     int any = 0;
-    for (k = 0; k < NSIDES; k++) {
-      const int d = k / 2;
+    for (j = 0; j < ns; j++) {
+      const int k = sides[j], d = k / 2;
       const double sign = (k & 1) ? 1.0 : -1.0; /* the outward normal */
       double pen, kp;
-      if (!penalty_side(s, k) || (pen = penetration(s, i, k)) <= 0) continue;
+      if ((pen = penetration(s, i, k)) <= 0) continue;
       if ((kp = stiffness(s, i)) <= 0) continue;
       f[d] -= sign * kp * pen;
       s->sides[k].force[d] -= sign * kp * pen;
       any = 1;
     }
-    if (any) spread_any(s, i, f);
+    if (any) spread_any(s, &geo, i, f);
   }
 }
 

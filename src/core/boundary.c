@@ -593,7 +593,7 @@ void boundary_apply(sim *s) {
   for (k = 0; k < NSIDES; k++) {
     int line, first, last;
     if (s->sides[k].kind != SIDE_WALL) continue;
-    if (cfg->wall_rule == WALL_PENALTY && !s->sides[k].mirror) continue;
+    if (sim_penalty_side(s, k)) continue;
     wall_lines(g, k, &first, &last);
     /* a mirror plane holds every node on it: no patches */
     if (cfg->wall_rule != WALL_NODE && !s->sides[k].mirror) {
@@ -682,7 +682,7 @@ void boundary_normal_set(sim *s, double *const a[DIM],
     double v = vel ? sd->v[d] : 0.0;
     size_t j;
     if (sd->kind != SIDE_WALL) continue;
-    if (cfg->wall_rule == WALL_PENALTY && !sd->mirror) continue;
+    if (sim_penalty_side(s, k)) continue;
     if (cfg->wall_rule != WALL_NODE && !sd->mirror) {
       patch_normal_side(s, k, a, sa, v);
       continue;

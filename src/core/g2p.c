@@ -113,8 +113,7 @@ STENCIL_INLINE void box_init(box *bx, const sim *s) {
   }
   bx->anyhold = 0;
   for (k = 0; k < NSIDES; k++) {
-    bx->hold[k] = s->cfg.wall_rule == WALL_PENALTY &&
-                  s->sides[k].kind == SIDE_WALL && !s->sides[k].mirror;
+    bx->hold[k] = sim_penalty_side(s, k);
     bx->anyhold |= bx->hold[k];
   }
 }

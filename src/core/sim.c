@@ -124,7 +124,7 @@ int sim_prepare(sim *s) {
     snprintf(s->err, sizeof s->err, "cannot start %d threads", cfg->threads);
     return -1;
   }
-  if (!wk->pflag && cfg->wall_rule == WALL_PENALTY && sim_wall_hold(s)) {
+  if (!wk->pflag && cfg->wall_rule == WALL_PENALTY) {
     if (!(wk->pflag = calloc(s->g.nnodes, 1))) {
       snprintf(s->err, sizeof s->err, "out of memory for the penalty walls");
       return -1;

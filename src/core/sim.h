@@ -34,8 +34,8 @@ enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* how a wall acts on the nodes where material touches it (boundary.c) */
 /* ... WALL_COUPLE: the patch rule with sliding friction put at the wall
 ** line by a couple on the first node line inside (boundary.c);
-** WALL_PENALTY: on the particles that pass the wall line, a spring and
-** Coulomb friction (wall_penalty.c) */
+** WALL_PENALTY: a spring on each particle that passes the wall line,
+** frictionless walls only (wall_penalty.c) */
 enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY };
 /* how contact between two bodies acts: node by node (contact.c) or one
 ** velocity change per side over each contact patch (contact_patch.c) */
@@ -292,6 +292,13 @@ typedef struct sim {
   sim_work work;     /* the step's scratch */
   char err[256];
 } sim;
+
+/* whether side k pushes particles by springs (wall_contact "penalty"):
+** every wall but a mirror plane, which keeps the node rule */
+static inline int sim_penalty_side(const sim *s, int k) {
+  return s->cfg.wall_rule == WALL_PENALTY && s->sides[k].kind == SIDE_WALL &&
+         !s->sides[k].mirror;
+}
 
 /* bytes of partial sums per chunk of particles (par.h) a phase may use */
 #define SIM_RED_BYTES 128

@@ -46,11 +46,6 @@
 #include "sim.h"
 #include "stencil.h"
 
-/* whether side k acts by penalty */
-static int penalty_side(const sim *s, int k) {
-  return s->sides[k].kind == SIDE_WALL && !s->sides[k].mirror;
-}
-
 /* particle i's penetration of side k (> 0: inside the wall) */
 static double penetration(const sim *s, size_t i, int k) {
   const grid *g = &s->g;
@@ -74,7 +69,7 @@ static double stiffness(const sim *s, size_t i) {
 /* the force f on particle i onto the updated momenta of the nodes of its
 ** stencil (its field's slot at a shared node), times dt */
 STENCIL_INLINE void spread(sim *s, const int kind, const stencil_geo *geo,
-                           size_t i, const double *f) {
+                           unsigned char *fl, size_t i, const double *f) {
   grid *g = &s->g;
   stencil st;
   double x[DIM];
@@ -86,9 +81,9 @@ STENCIL_INLINE void spread(sim *s, const int kind, const stencil_geo *geo,
     int32_t n = st.node[k];
     double w = st.w[k] * s->dt;
     for (a = 0; a < DIM; a++) g->q[a][n] += w * f[a];
-    if (s->work.pflag)
+    if (fl)
       for (a = 0; a < DIM; a++)
-        if (f[a] != 0) s->work.pflag[n] |= (unsigned char)(1u << a);
+        if (f[a] != 0) fl[n] |= (unsigned char)(1u << a);
     if (g->head[n] >= 0) {
       int32_t sl = grid_slot(g, n, fld);
       for (a = 0; a < DIM; a++) g->sq[a][sl] += w * f[a];
@@ -96,22 +91,25 @@ STENCIL_INLINE void spread(sim *s, const int kind, const stencil_geo *geo,
   }
 }
 
-static void spread_any(sim *s, const stencil_geo *geo, size_t i,
-                       const double *f) {
+static void spread_any(sim *s, const stencil_geo *geo, unsigned char *fl,
+                       size_t i, const double *f) {
   switch (s->cfg.shape) {
-  case SHAPE_GIMP: spread(s, SHAPE_GIMP, geo, i, f); break;
-  case SHAPE_BSPLINE2: spread(s, SHAPE_BSPLINE2, geo, i, f); break;
-  default: spread(s, SHAPE_LINEAR, geo, i, f);
+  case SHAPE_GIMP: spread(s, SHAPE_GIMP, geo, fl, i, f); break;
+  case SHAPE_BSPLINE2: spread(s, SHAPE_BSPLINE2, geo, fl, i, f); break;
+  default: spread(s, SHAPE_LINEAR, geo, fl, i, f);
   }
 }
 
 void wall_penalty(sim *s) {
   const particles *ps = &s->ps;
   stencil_geo geo;
+  /* the nodes pushed are marked only where wall_penalty_hold will read
+  ** (and clear) them */
+  unsigned char *fl = sim_wall_hold(s) ? s->work.pflag : NULL;
   int sides[NSIDES], ns = 0, j;
   size_t i;
   for (j = 0; j < NSIDES; j++)
-    if (penalty_side(s, j)) sides[ns++] = j;
+    if (sim_penalty_side(s, j)) sides[ns++] = j;
   stencil_geo_init(&geo, &s->g);
   for (i = 0; i < ps->n; i++) {
     double f[DIM] = {0};
@@ -126,7 +124,7 @@ void wall_penalty(sim *s) {
       s->sides[k].force[d] -= sign * kp * pen;
       any = 1;
     }
-    if (any) spread_any(s, &geo, i, f);
+    if (any) spread_any(s, &geo, fl, i, f);
   }
 }
 
@@ -167,7 +165,7 @@ double wall_penalty_energy(const sim *s) {
   int k;
   if (s->cfg.wall_rule != WALL_PENALTY) return 0;
   for (k = 0; k < NSIDES; k++) {
-    if (!penalty_side(s, k)) continue;
+    if (!sim_penalty_side(s, k)) continue;
     for (i = 0; i < s->ps.n; i++) {
       double pen = penetration(s, i, k);
       if (pen > 0) e += 0.5 * stiffness(s, i) * pen * pen;

@@ -448,12 +448,11 @@ int lsim_new(lua_State *L) {
     s->cfg.wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
     s->cfg.wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
     s->cfg.wall_stiffness = chk_num(L, 1, what, "wall_stiffness", 2, 0.01, 16, 0);
-    if (s->cfg.wall_rule == WALL_PENALTY)
-      for (k = 0; k < NSIDES; k++)
-        if (s->sides[k].kind == SIDE_WALL && !s->sides[k].mirror && s->sides[k].mu > 0)
-          chk_error(L, "%s: wall_contact = \"penalty\" takes frictionless walls; "
-                       "side '%s' has friction %g (use \"patch\" for walls with "
-                       "friction)", what, lsim_side_names[k], s->sides[k].mu);
+    for (k = 0; k < NSIDES; k++)
+      if (sim_penalty_side(s, k) && s->sides[k].mu > 0)
+        chk_error(L, "%s: wall_contact = \"penalty\" takes frictionless walls; "
+                     "side '%s' has friction %g (use \"patch\" for walls with "
+                     "friction)", what, lsim_side_names[k], s->sides[k].mu);
     if (s->cfg.wall_rule == WALL_PENALTY && sim_lossy(&s->cfg))
       chk_error(L, "%s: wall_contact = \"penalty\" needs pure FLIP (transfer = "
                    "\"flip\", flip = 1): under a smoothing transfer its energy budget "
@@ -934,7 +933,7 @@ static int lwall_nodes(lua_State *L) {
   if (k == NSIDES)
     luaL_error(L, "wall_nodes: no side '%s' (the sides are left, right, "
                   "bottom, top%s)", name, DIM == 3 ? ", back, front" : "");
-  if (ls->s.cfg.wall_rule == WALL_PENALTY && !ls->s.sides[k].mirror)
+  if (sim_penalty_side(&ls->s, k))
     luaL_error(L, "wall_nodes: under wall_contact = \"penalty\" the walls push "
                   "particles, not nodes; sim:wall_force('%s') gives the force", name);
   if (diag_wall(&ls->s, k, &w, &n)) return luaL_error(L, "%s", ls->s.err);

@@ -25,7 +25,7 @@ local case = {
   length = "the inner disc's diameter",
   reference = "plane-strain Lame solution: onset at |dT| = 0.0074074",
   metrics = {{key = "onset", label = "|onset / Lame - 1|"}},
-  grid = {cells = {10, 14, 20, 28, 40}, shape = {"linear", "gimp"}},
+  grid = {cells = {10, 14, 20, 28, 40}, shape = {"linear", "gimp", "bspline2"}},
   baseline = {cells = 20, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
   run = function(s, clock)
     local n = math.floor(s.cells / (2 * a) + 0.5)  -- cells across the unit domain

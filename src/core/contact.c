@@ -349,9 +349,17 @@ static double normal_stress(const grid *g, int32_t j, int32_t q, int drv) {
 ** not shrink.  Fitted: 0.974 / 1.006 / 0.997, scatter 0.003 over a patch
 ** of 0.08 (docs/verification.md).  Why the strip: over a square window
 ** the curved interface (5 cells radius at 25 cells) turned the hoop
-** stress into the normal one (mean 0.79 at 25 cells).
+** stress into the normal one (mean 0.79 at 25 cells).  Why four cells
+** each way: the nodes both fields reach span the stencil's reach on
+** each side of the interface (1.5 cells for B-splines and GIMP), so
+** over three cells a side was often left one node row or none, too few
+** for a line, and the node fell back on the mixture.  Measured, the
+** concentric onset / Lame at 25 / 35 / 50 cells, three cells against
+** four: B-splines 0.959 / 1.047 / 0.995 against 0.963 / 1.006 / 0.995,
+** uGIMP 1.055 / 1.006 / 0.999 against 1.005 / 1.004 / 0.999, linear
+** hats 1.006 / 0.998 / 0.995 either way.
 */
-#define FIT_PATCH 3
+#define FIT_PATCH 4
 #define FIT_CROSS 1.5
 
 /* n . T . n of a symmetric tensor T held as grid_sym's upper triangle,

@@ -36,7 +36,10 @@ end
 -- rotated by deg to the grid, gravity down; nil: the slope along the grid
 -- and gravity rotated by 30 degrees), shape ("linear"), gap ("touch"),
 -- flip, transfer (the sim's defaults), dim (3: the same section extruded
--- two cells along a periodic z; the answers are the 2-D ones).
+-- two cells along a periodic z; the answers are the 2-D ones), lattice
+-- (true: both bodies seeded on a lattice of their own turned with the
+-- slope, through the face's corner, so that the faces are straight rows
+-- of particles; with deg only).
 -- Returns {a (over the reference), spin (largest |omega| after the block
 -- settles, t > 0.1), across (largest speed across the surface over the
 -- speed along it at the end), rot (|spin integrated|, rad), hop (how far
@@ -67,9 +70,10 @@ function M.block(o)
     t_end = T, normals = meth, normal_window = win, normal_patch = pat, contact_gap = o.gap, body_contact = o.body_contact,
     contact = {friction = o.mu}}
   local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}
-  sim:body {name = "slope", material = m, driven = d3 and {0, 0, 0} or {0, 0},
+  local lat = o.lattice and rot0 and {angle = -(o.deg or 30), origin = d3 and {P[1], P[2], 0} or P} or nil
+  sim:body {name = "slope", material = m, driven = d3 and {0, 0, 0} or {0, 0}, lattice = lat,
     shape = prism {pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}}
-  local b = sim:body {name = "block", material = m,
+  local b = sim:body {name = "block", material = m, lattice = lat,
     shape = prism {pt(0.1, 0), pt(0.1 + L, 0), pt(0.1 + L, L), pt(0.1, L)}}
   -- the spin about z (a 3-D body's omega is a vector)
   local function wz(d) return d3 and d.omega[3] or d.omega end

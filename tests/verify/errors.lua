@@ -45,6 +45,20 @@ local rules = {
   {"overlapping bodies", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. '}\n' ..
     's:body {shape = mvmpm.disk {center = {0.6, 0.5}, radius = 0.2}, material = ' .. el .. '}',
     4, {"overlaps body", "overlap = \"skip\""}},
+  {"a body's own lattice needs its angle", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. ', lattice = {origin = {0, 0}}}',
+    3, {"lattice", "'angle'"}},
+  {"a body's own lattice: angle in [-360, 360]", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. ', lattice = {angle = 400}}',
+    3, {"lattice", "'angle'", "%[%-360, 360%]", "got 400"}},
+  {"a body's own lattice: a misspelt key", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. ', lattice = {angel = 10}}',
+    3, {"unknown field 'angel'", "did you mean 'angle'"}},
+  {"a body's own lattice is not for the rest", sim0 .. 's:body {shape = mvmpm.rest(), material = ' .. el .. ', lattice = {angle = 10}}',
+    3, {"'lattice'", "the rest"}},
+  {"a body's own lattice does not cross periodic sides", 'local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {left = "periodic", right = "periodic"}}\n' ..
+    's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. ', lattice = {angle = 10}}',
+    3, {"'lattice'", "periodic sides in x"}},
+  {"bodies on their own lattices that overlap", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. ', lattice = {angle = 10}}\n' ..
+    's:body {shape = mvmpm.disk {center = {0.6, 0.5}, radius = 0.2}, material = ' .. el .. ', lattice = {angle = 20}}',
+    4, {"overlaps body", "overlap = \"skip\""}},
   {"a misspelt body key", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, materal = 1}',
     3, {"unknown field 'materal'", "did you mean 'material'"}},
   {"a wall's velocity along its normal", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {left = {"wall", velocity = {1, 0}}}}',

@@ -204,6 +204,61 @@ do
   V.below("largest |C - [w]x| over the particles", worst, 0)
 end
 
+V.case("a body on a lattice of its own (lattice = {angle, origin})")
+do
+  -- a square of side 0.3 turned by 20 degrees about its corner o, on a
+  -- lattice turned with it through o: the points are the square's own
+  -- grid, (0.3 / (h / 2))^2 of them (in 3-D times the slab's rows), each
+  -- at a half-integer multiple of h / 2 from both faces through o
+  local h, th, o = 0.05, math.rad(20), {0.3, 0.2}
+  local ca, sa = math.cos(th), math.sin(th)
+  local function pt(a, b) return {o[1] + ca * a - sa * b, o[2] + sa * a + ca * b} end
+  local corners = {pt(0, 0), pt(0.3, 0), pt(0.3, 0.3), pt(0, 0.3)}
+  local m = mvmpm.elastic {K = 1, G = 1, density = 1}
+  local function square()
+    if D == 2 then return mvmpm.polygon(corners) end
+    return mvmpm.extrude {polygon = corners, lo = 0.2, hi = 0.7}
+  end
+  local origin = D == 2 and o or {o[1], o[2], 0.2}
+  local sp = mvmpm.sim {domain = domain(), cell = h, dim = D}
+  local b = sp:body {shape = square(), material = m, lattice = {angle = 20, origin = origin}}
+  local want = (0.3 / (h / 2)) ^ 2 * (D == 2 and 1 or 0.5 / (h / 2))
+  V.near("points: the square's own grid", b:diag().n, want, 1e-9)
+  V.near("mass: exactly the square's measure", b:mass(), D == 2 and 0.09 or 0.09 * 0.5, 1e-12, true)
+  local pos, worst = sp:particles("position"), 0
+  for i = 1, #pos.x do
+    local dx, dy = pos.x[i] - o[1], pos.y[i] - o[2]
+    for _, u in ipairs {(ca * dx + sa * dy) / (h / 2), (-sa * dx + ca * dy) / (h / 2)} do
+      worst = math.max(worst, math.abs(u - 0.5 - math.floor(u)))
+    end
+  end
+  V.below("every point on the turned lattice: largest offset (in spacings)", worst, 1e-9)
+  -- on the grid's lattice the same square is a staircase: its count differs
+  local sg = mvmpm.sim {domain = domain(), cell = h, dim = D}
+  local bg = sg:body {shape = square(), material = m}
+  V.info("the same square on the grid's lattice: points", bg:diag().n)
+  -- the rest fills around it without taking its place, and a body on the
+  -- grid's lattice sharing a face with it is no overlap
+  local rest = sp:body {shape = mvmpm.rest(), material = m, overlap = "skip"}
+  V.near("the rest takes every grid point but those inside the turned square",
+         rest:mass(), 1 - bg:mass(), 1e-12, true)
+  local st = mvmpm.sim {domain = domain(), cell = h, dim = D}
+  st:body {shape = square(), material = m, lattice = {angle = 20, origin = origin}}
+  local below = {pt(0, 0), pt(0.3, 0), pt(0.3, -0.1), pt(0, -0.1)}
+  local ok, err = pcall(function()
+    st:body {shape = D == 2 and mvmpm.polygon(below) or mvmpm.extrude {polygon = below, lo = 0.2, hi = 0.7},
+             material = m}
+  end)
+  V.holds("a grid-lattice body under its face is no overlap", ok, 0, tostring(err))
+  local ok2, err2 = pcall(function()
+    st:body {shape = D == 2 and mvmpm.disk {center = pt(0.15, 0.15), radius = 0.05}
+                             or mvmpm.ball {center = {pt(0.15, 0.15)[1], pt(0.15, 0.15)[2], 0.45}, radius = 0.05},
+             material = m}
+  end)
+  V.holds("a body inside it is an overlap", not ok2 and tostring(err2):find("overlaps body", 1, true) ~= nil, 0,
+          tostring(err2))
+end
+
 V.case("bad shapes: the field and the expected count")
 local function refuses(name, fn, pattern)
   local ok, err = pcall(fn)

@@ -258,9 +258,19 @@ static void seed_turned(lua_State *L, lsim *ls, int shidx, int skip_taken,
   lshape *sh = lshape_check(L, shidx);
   double hp = g->h / ls->s.cfg.ppc, vol = pow(hp, DIM), lo[DIM], hi[DIM];
   int i0[DIM], i1[DIM], ix[DIM], c, d;
+  /* the shape's box, clipped to the domain but along a periodic axis
+  ** (z only: lattice_spec refuses periodic x and y), where the shape is
+  ** tested where it is and its points go to their images */
   for (d = 0; d < DIM; d++) {
-    lo[d] = sh->lo[d] > g->lo[d] ? sh->lo[d] : g->lo[d];
-    hi[d] = sh->hi[d] < g->hi[d] ? sh->hi[d] : g->hi[d];
+    lo[d] = sh->lo[d];
+    hi[d] = sh->hi[d];
+    if (!g->periodic[d]) {
+      if (lo[d] < g->lo[d]) lo[d] = g->lo[d];
+      if (hi[d] > g->hi[d]) hi[d] = g->hi[d];
+    } else if (!(isfinite(lo[d]) && isfinite(hi[d]))) {
+      lo[d] = g->lo[d];
+      hi[d] = g->hi[d];
+    }
     if (!(hi[d] > lo[d])) return;
   }
   /* the box's corners in the lattice's frame give its index range */
@@ -281,8 +291,14 @@ static void seed_turned(lua_State *L, lsim *ls, int shidx, int skip_taken,
     }
   }
   for (d = 2; d < DIM; d++) {
+    int n = g->cells[d] * ls->s.cfg.ppc;
     i0[d] = (int)floor((lo[d] - lt->o[d]) / hp) - 1;
     i1[d] = (int)ceil((hi[d] - lt->o[d]) / hp) + 1;
+    /* at most one period's points: each image once */
+    if (g->periodic[d] && i1[d] - i0[d] > n) {
+      i0[d] = (int)ceil((lo[d] - lt->o[d]) / hp - 0.5);
+      i1[d] = i0[d] + n;
+    }
   }
   for (d = 0; d < DIM; d++) ix[d] = i0[d];
   for (;;) {
@@ -295,16 +311,20 @@ static void seed_turned(lua_State *L, lsim *ls, int shidx, int skip_taken,
     x[0] = lt->o[0] + lt->ca * a - lt->sa * b;
     x[1] = lt->o[1] + lt->sa * a + lt->ca * b;
     for (d = 2; d < DIM; d++) x[d] = lt->o[d] + (ix[d] + 0.5) * hp;
-    for (d = 0; d < DIM && in; d++) {
-      if (g->periodic[d]) {
-        double L0 = g->hi[d] - g->lo[d];
-        x[d] -= L0 * floor((x[d] - g->lo[d]) / L0);
-      }
-      in = x[d] >= g->lo[d] && x[d] < g->hi[d];
-    }
+    for (d = 0; d < DIM && in; d++)
+      in = g->periodic[d] || (x[d] >= g->lo[d] && x[d] < g->hi[d]);
     if (in && lshape_inside(L, shidx, sh, x)) {
-      size_t k = site_of(ls, x, xc);
+      double shift[DIM];
+      size_t k;
       int mine = 1;
+      for (d = 0; d < DIM; d++) { /* to the image in the domain */
+        double L0 = g->hi[d] - g->lo[d];
+        shift[d] = g->periodic[d] ? L0 * floor((x[d] - g->lo[d]) / L0) : 0;
+        x[d] -= shift[d];
+      }
+      k = site_of(ls, x, xc);
+      /* the site's centre tested where the shape is, as the point was */
+      for (d = 0; d < DIM; d++) xc[d] += shift[d];
       if (ls->occ[k] >= 0 && lshape_inside(L, shidx, sh, xc)) {
         char pt[CHK_PTLEN];
         if (!skip_taken)

@@ -257,6 +257,20 @@ do
   end)
   V.holds("a body inside it is an overlap", not ok2 and tostring(err2):find("overlaps body", 1, true) ~= nil, 0,
           tostring(err2))
+  if D == 3 then
+    -- across a periodic z seam: each image once, the whole slab's points
+    local sides = {left = "free", right = "free", bottom = "free", top = "free",
+                   back = "periodic", front = "periodic"}
+    local sz = mvmpm.sim {domain = domain(), cell = h, dim = D, sides = sides}
+    local across = sz:body {shape = mvmpm.extrude {polygon = corners, lo = 0.8, hi = 1.3}, material = m,
+                            lattice = {angle = 20, origin = {o[1], o[2], 0.8}}}
+    V.near("across a periodic seam: the slab's own grid, each point once", across:diag().n, want, 1e-9)
+    local whole = mvmpm.sim {domain = domain(), cell = h, dim = D, sides = sides}
+    local all = whole:body {shape = mvmpm.extrude {polygon = corners, lo = -1, hi = 2}, material = m,
+                            lattice = {angle = 20, origin = origin}}
+    V.near("a slab longer than the period: one period's points", all:diag().n,
+           (0.3 / (h / 2)) ^ 2 * (1 / (h / 2)), 1e-9)
+  end
 end
 
 V.case("bad shapes: the field and the expected count")

@@ -39,7 +39,8 @@ end
 -- two cells along a periodic z; the answers are the 2-D ones), lattice
 -- (true: both bodies seeded on a lattice of their own turned with the
 -- slope, through the face's corner, so that the faces are straight rows
--- of particles; with deg only).
+-- of particles; with deg only), t_end (0.4) and fit_from (0.1): the run's
+-- end and the start of the window the acceleration is fitted over.
 -- Returns {a (over the reference), spin (largest |omega| after the block
 -- settles, t > 0.1), across (largest speed across the surface over the
 -- speed along it at the end), rot (|spin integrated|, rad), hop (how far
@@ -48,7 +49,7 @@ end
 -- energy budget's residual over the work of gravity, m g sin th times the
 -- distance), cpu (os.clock seconds)}
 function M.block(o)
-  local L, T = 0.2, 0.4
+  local L, T, t0fit = 0.2, o.t_end or 0.4, o.fit_from or 0.1
   local th = math.rad(o.deg or 30)
   local meth, win, pat = M.opts(o.method)
   local rot0 = o.deg ~= nil
@@ -82,7 +83,7 @@ function M.block(o)
   sim:every {steps = 1, fn = function(s)
     local d = b:diag()
     rot, t0 = rot + wz(d) * (s.t - t0), s.t
-    if s.t < 0.1 then return end
+    if s.t < t0fit then return end
     ts[#ts + 1], vs[#vs + 1] = s.t, d.vx * S[1] + d.vy * S[2]
     spin = math.max(spin, math.abs(wz(d)))
     across = math.max(across, math.abs(d.vx * N[1] + d.vy * N[2]))

@@ -51,6 +51,8 @@ local rules = {
     3, {"lattice", "'angle'", "%[%-360, 360%]", "got 400"}},
   {"a body's own lattice: a misspelt key", sim0 .. 's:body {shape = mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}, material = ' .. el .. ', lattice = {angel = 10}}',
     3, {"unknown field 'angel'", "did you mean 'angle'"}},
+  {"a body's own lattice is not for points", sim0 .. 's:body {points = {x = {0.5}, y = {0.5}}, material = ' .. el .. ', lattice = {angle = 10}}',
+    3, {"'lattice'", "'points'"}},
   {"a body's own lattice is not for the rest", sim0 .. 's:body {shape = mvmpm.rest(), material = ' .. el .. ', lattice = {angle = 10}}',
     3, {"'lattice'", "the rest"}},
   {"a body's own lattice does not cross periodic sides", 'local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {left = "periodic", right = "periodic"}}\n' ..

@@ -339,6 +339,33 @@ do
   end
 end
 
+-- The same blocks over a longer run (to t = 1.2, the acceleration fitted
+-- over 0.3 .. 1.2), B-splines, grid's lattice, plane/4+patch, mu 0.2.
+-- Measured at 8 / 16 cells: 30 deg 0.991 / 0.997, 45 deg 0.997 / 0.999;
+-- 15 deg 0.791 / 0.971 (the block slows as it slides over the face's
+-- steps), and at 32 cells under pure FLIP it rocks and runs 27 % fast
+-- (flip = 0.99: 0.974): reported (docs/verification.md).  Asserted: 30
+-- and 45 deg within 2 % at 8 and 16 cells
+V.case "block on a tilted flat body over a longer run (B-splines, plane/4+patch, mu 0.2)"
+do
+  for _, deg in ipairs {15, 30, 45} do
+    for _, k in ipairs {8, 16} do
+      local r = C.block {k = k, method = "plane/4+patch", mu = 0.2, deg = deg, shape = "bspline2",
+                         t_end = 1.2, fit_from = 0.3}
+      local tag = string.format("long run, %d deg, %d cells", deg, k)
+      print(string.format("     %2d deg, %2d cells: a / a_ref %.4f, spin %.3f, hop %.4f L", deg, k, r.a, r.spin, r.hop))
+      if deg == 15 then
+        V.info(tag .. ": |a / a_ref - 1| (3 % wanted)", math.abs(r.a - 1))
+      else
+        V.below(tag .. ": |a / a_ref - 1|", math.abs(r.a - 1), 0.02)
+        -- the block lifts off by 1.1 % of L at the run's end at 45 deg
+        -- and 8 cells (0.3 % at 30 deg): reported
+        V.info(tag .. ": normal displacement / L at the end", r.hop)
+      end
+    end
+  end
+end
+
 V.case "glancing frictionless discs (offset 0.2, one radius)"
 local r = sweep(CELLS, discs)
 print("     1 - kept relative velocity across the line of centres, cells 20 40 80:")

@@ -166,9 +166,9 @@ static int32_t win_node(const grid *g, const int i[DIM], const int b[DIM]) {
 ** others' at the nodes where f has a slot (rest), or, with A, y, the
 ** plane's normal equations over every shared node of the window.
 **
-** disc: the plane's window weighted 1 - r^2 / (R + 1)^2 by the node's
-** distance r from n (in cells), a round window, instead of the square's
-** uniform weights.  Why: the least-squares plane of a flat face seen
+** rr: the plane's window weighted 1 - r^2 / rr by the node's distance r
+** from n (in cells): with rr = (R + 1)^2 a round window, with rr
+** infinite the square's uniform weights.  Why: the least-squares plane of a flat face seen
 ** through a square window is turned toward the grid's axes wherever
 ** the face is neither along them nor diagonal (the band of shared
 ** nodes, cut by the square, is not symmetric about the face's normal),
@@ -183,7 +183,7 @@ static int32_t win_node(const grid *g, const int i[DIM], const int b[DIM]) {
 ** friction, 16 cells: -1.2 % square, -4.3 % round), so there the square
 ** stays. */
 static void window(const grid *g, double *const a[DIM], int32_t n, int32_t f,
-                   int R, int disc, double own[DIM], double rest[DIM],
+                   int R, double rr, double own[DIM], double rest[DIM],
                    double A[NP][NP], double y[NP]) {
   int i[DIM], b[DIM], d;
   for (d = 0; d < DIM; d++) own[d] = rest[d] = 0;
@@ -193,12 +193,12 @@ static void window(const grid *g, double *const a[DIM], int32_t n, int32_t f,
     int32_t j = win_node(g, i, b), q;
     if (j < 0 || g->head[j] < 0) continue;
     if (A) {
-      double dl[DIM], r2 = 0, k = 1;
+      double dl[DIM], r2 = 0, k;
       for (d = 0; d < DIM; d++) {
         dl[d] = -b[d];
         r2 += (double)b[d] * b[d];
       }
-      if (disc) k = 1 - r2 / ((R + 1.0) * (R + 1.0));
+      k = 1 - r2 / rr;
       if (k > 0) moments(g, j, f, dl, k, A, y);
       continue;
     }
@@ -231,7 +231,7 @@ static void normals(sim *s, size_t k0, size_t k1) {
   const int pl = cfg->normals == NORMALS_PLANE;
   const int R = cfg->normal_window;
   /* the patch's mean normal wants each fit unbiased: window() */
-  const int disc = cfg->normal_patch && R > 0;
+  const double rr = cfg->normal_patch && R > 0 ? (R + 1.0) * (R + 1.0) : INFINITY;
   size_t k;
   for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl, first = g->head[n];
@@ -250,7 +250,7 @@ static void normals(sim *s, size_t k0, size_t k1) {
           for (d = 0; d < DIM; d++) g->sn[d][sl] = -g->sn[d][first];
           continue;
         }
-        window(g, a, n, g->sfield[sl], R, disc, own, rest, A, y);
+        window(g, a, n, g->sfield[sl], R, rr, own, rest, A, y);
         if (solve(A, y, u)) {
           for (d = 0; d < DIM; d++) l2 += u[d] * u[d];
           if (l2 > 0) {
@@ -262,7 +262,7 @@ static void normals(sim *s, size_t k0, size_t k1) {
         }
       }
       /* the gradients' sums: the method, or the plane's fallback */
-      window(g, a, n, g->sfield[sl], R, 0, own, rest, NULL, NULL);
+      window(g, a, n, g->sfield[sl], R, INFINITY, own, rest, NULL, NULL);
       for (d = 0; d < DIM; d++) {
         v[d] = own[d] - rest[d];
         len += v[d] * v[d];

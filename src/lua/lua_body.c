@@ -142,6 +142,16 @@ static void seed_push(lua_State *L, seed *sd, const double *x, double vol) {
   sd->vol[sd->n++] = vol;
 }
 
+/* the body being seeded (its name on the stack's top) meets body
+** 'other' at x */
+static void overlap_error(lua_State *L, const lsim *ls, int32_t other,
+                          const double *x) {
+  char pt[CHK_PTLEN];
+  chk_error(L, "body '%s' overlaps body '%s' at %s; move it, or "
+               "give overlap = \"skip\" to seed only the free points",
+            lua_tostring(L, -1), ls->s.bodies[other].name, chk_pt(pt, x));
+}
+
 /* lattice points of the shape at index 'shidx' */
 static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
                        int push, seed *sd, size_t **taken, size_t *ntaken) {
@@ -198,13 +208,7 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
     in = lshape_inside(L, shidx, sh, x);
     if (in) {
       for (d = 0; d < DIM; d++) x[d] = g->lo[d] + (iw[d] + 0.5) * hp;
-      if (ls->occ[k] >= 0 && !skip_taken) {
-        char pt[CHK_PTLEN];
-        chk_error(L, "body '%s' overlaps body '%s' at %s; move it, or "
-                     "give overlap = \"skip\" to seed only the free points",
-                  lua_tostring(L, -1), ls->s.bodies[ls->occ[k]].name,
-                  chk_pt(pt, x));
-      }
+      if (ls->occ[k] >= 0 && !skip_taken) overlap_error(L, ls, ls->occ[k], x);
       if (ls->occ[k] < 0) {
         if (*ntaken == cap) {
           size_t *p;
@@ -316,7 +320,6 @@ static void seed_turned(lua_State *L, lsim *ls, int shidx, int skip_taken,
     if (in && lshape_inside(L, shidx, sh, x)) {
       double shift[DIM];
       size_t k;
-      int mine = 1;
       for (d = 0; d < DIM; d++) { /* to the image in the domain */
         double L0 = g->hi[d] - g->lo[d];
         shift[d] = g->periodic[d] ? L0 * floor((x[d] - g->lo[d]) / L0) : 0;
@@ -325,16 +328,10 @@ static void seed_turned(lua_State *L, lsim *ls, int shidx, int skip_taken,
       k = site_of(ls, x, xc);
       /* the site's centre tested where the shape is, as the point was */
       for (d = 0; d < DIM; d++) xc[d] += shift[d];
-      if (ls->occ[k] >= 0 && lshape_inside(L, shidx, sh, xc)) {
-        char pt[CHK_PTLEN];
-        if (!skip_taken)
-          chk_error(L, "body '%s' overlaps body '%s' at %s; move it, or "
-                       "give overlap = \"skip\" to seed only the free points",
-                    lua_tostring(L, -1), ls->s.bodies[ls->occ[k]].name,
-                    chk_pt(pt, x));
-        mine = 0;
-      }
-      if (mine) seed_push(L, sd, x, vol);
+      if (!(ls->occ[k] >= 0 && lshape_inside(L, shidx, sh, xc)))
+        seed_push(L, sd, x, vol);
+      else if (!skip_taken)
+        overlap_error(L, ls, ls->occ[k], x);
     }
     for (d = 0; d < DIM && ++ix[d] == i1[d]; d++) ix[d] = i0[d];
     if (d == DIM) break;

@@ -297,7 +297,7 @@ figures: $(BIN)
 # settings, one after the other (timings are taken one run at a time);
 # STUDY_QUICK=1 for a smoke run, STUDY_REPEATS=R for the repeats (default 3)
 STUDIES = bar bar_ppc_cfl disc block concentric concentric_onset debond_front cohesive bounce_friction bounce roll roll_slab friction_work body_patch \
-          grain_budget piston_pack thermal_explosion d3_bounce
+          grain_budget piston_pack thermal_explosion d3_bounce ringing
 study: $(BIN)
 	@mkdir -p out/study docs/figures
 	@bash -o pipefail -c 'for s in $(STUDIES); do ./$(BIN) test studies/$$s.lua || exit 1; done 2>&1 | tee out/study/study.log'

@@ -19,6 +19,7 @@ local P = mvmpm.params {
   energy = 0,          -- fracture energy per area of the A-B interface
   shape = "linear",
   transfer = "flip",   -- or "apic", "xpic"
+  update = "default",  -- or "usl", "musl", "usavg"
   shift = 0,           -- the bodies moved along x by this fraction of a cell
   dim = 2,             -- 3: the same blocks 0.25 deep, periodic back and front
   t_end = 12,
@@ -31,6 +32,7 @@ local sim = mvmpm.sim {
   cell = 1 / P.cells,
   shape = P.shape,
   transfer = P.transfer,
+  update = P.update ~= "default" and P.update or nil,
   bond_energy = P.energy,
   t_end = P.t_end,
   sides = {left = "free", right = "free", bottom = "periodic", top = "periodic",

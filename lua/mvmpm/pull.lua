@@ -66,7 +66,7 @@ function P.run(o)
   local t2 = P.dc / 2 / P.V0 + P.T / 2
   local w, tend = (t2 - t1) / 10, t2 + 0.5 * (t2 - t1)
   local sim = mvmpm.load("scenarios/bond_pull.lua", {strength = P.sigma, energy = gc,
-    cells = o.cells, shape = o.shape, transfer = o.transfer, V0 = P.V0, shift = 0.3, t_end = tend, dim = o.dim})
+    cells = o.cells, shape = o.shape, transfer = o.transfer, update = o.update, V0 = P.V0, shift = 0.3, t_end = tend, dim = o.dim})
   local area = P.area * (o.dim == 3 and 0.25 or 1)
   local run = o.run or function(s, t) s:run(t) end
   local grip

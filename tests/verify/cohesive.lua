@@ -109,7 +109,29 @@ V.case "brittle (bond_energy = 0): nothing booked as cohesion"
 local b = P.run {cells = 16, energy = 0}
 V.below("work of separation booked", math.abs(b.w), 1e-12)
 V.near("grip travel at the first cut / (sigma L / M)", b.onset, 1, 0.05)
-V.below("|residual| / work put in (the bars ring with all they held)", math.abs(b.res), 0.01)
+-- the bars ring with all they held, still bonded to the moving grips:
+-- the energy left in them may not exceed the grips' work.  While the
+-- bonded remap took the node's mean velocity at the grips (bond.c) they
+-- ended with 2.2 times it (1.5 at 32 cells), booked as a negative bonding
+-- loss, with this residual at -0.08 % (+9.6 % at 32 cells); with the
+-- drive's velocity 0.93 of it, the bonded impulses taking 8.3 %, and the
+-- residual -1.2 % (+0.89 % at 32): the level of a sudden release, as in
+-- the hard pull below (2 % / 6.5 % at 16 / 32 cells)
+local eb = b.sim:energy()
+V.below("energy left / work put in (no energy made at the bonded grips)", eb.total / eb.boundary_work, 1)
+V.above("bonding loss / work put in (the bonded impulses give nothing back)", eb.bonding / eb.boundary_work, 0)
+V.below("|residual| / work put in (the bars ring with all they held)", math.abs(b.res), 0.02)
+-- under USAVG the same pull leaves -39 % of the work unbooked (the first
+-- half-step takes a bonded slot's own velocity beside the grips): such a
+-- scene is warned of (sim.advice; docs/verification.md, open items 10)
+do
+  local su = mvmpm.load("scenarios/bond_pull.lua", {strength = P.sigma, cells = 8, update = "usavg"})
+  local adv = su.advice or ""
+  V.holds("USAVG with bonds beside driven bodies is warned of (sim.advice)",
+          adv:find("bonds beside driven bodies", 1, true) ~= nil)
+  local sm = mvmpm.load("scenarios/bond_pull.lua", {strength = P.sigma, cells = 8, update = "musl"})
+  V.holds("... and MUSL is not", not (sm.advice or ""):find("bonds beside", 1, true))
+end
 
 V.case "a debond front, 24 cells: brittle against G_c = 1e-5"
 local F = require "mvmpm.front"

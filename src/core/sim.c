@@ -226,16 +226,6 @@ void sim_scheme(const sim *s, char *buf, size_t n) {
 
 const char *sim_advice(const sim *s) {
   int k, walls = 0;
-  /* measured (docs/verification.md, open items 10): USAVG's first half
-  ** takes a bonded slot's own velocity beside a driven body, where the
-  ** remap (bond_remap) takes the drive's, and the stresses work on two
-  ** different motions */
-  if (s->cfg.update == UPDATE_USAVG && s->fbond >= 0 && s->ndriven)
-    return "bonds beside driven bodies under update = \"usavg\" leave energy "
-           "unbooked: a pull whose bars ring after a brittle cut while still "
-           "bonded to their grips ends with a residual of -39 % of the work "
-           "put in at 16 cells (update = \"musl\", the default: -1.2 %) "
-           "(docs/verification.md, open items 10)";
   for (k = 0; k < NSIDES; k++)
     if (s->sides[k].kind == SIDE_WALL && !s->g.periodic[k / 2]) walls = 1;
   if (s->cfg.transfer != TRANSFER_FLIP || s->cfg.flip < 1 || !(walls || s->nfield > 1))
@@ -632,6 +622,11 @@ int sim_step(sim *s) {
   }
   if (s->heat && heat_prepare(s)) return -1;
   p2g(s);
+  /* USAVG with bonds: the strengths before the first half-step, which
+  ** holds the bonded slots beside driven bodies (usf.c); the traction
+  ** the bond test reads is then the stresses' at the step's start, as
+  ** under MUSL */
+  if (usavg && s->g.nshared && s->fbond >= 0) bond_gather(s);
   if (usavg && usf(s)) return -1;
   prof_mark(wk->prof, PROF_P2G);
   solve_momentum(s);
@@ -639,7 +634,7 @@ int sim_step(sim *s) {
   if (s->g.nshared) contact_normals(s);
   if (cfg->gap_check) reach(s);
   forces_clear(s);
-  if (s->g.nshared && s->fbond >= 0) bond_gather(s);
+  if (!usavg && s->g.nshared && s->fbond >= 0) bond_gather(s);
   if (s->g.nshared) contact_apply(s);
   if (s->ncut || (s->fcoh >= 0 && s->g.nshared)) {
     bond_scatter(s);

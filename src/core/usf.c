@@ -100,9 +100,63 @@ static void gradient_part(void *arg, int t, int nparts) {
   gradient_range(s, i0, i1);
 }
 
+/*
+** Bonds beside a driven body.  MUSL's remap gives a bonded slot there the
+** drive's velocity (bond.c bond_remap); the first half-step must strain
+** its particles by the same motion, or the two halves work on different
+** velocities and the bonded interface makes energy (measured: a bar
+** bonded to a grip at rest, ringing, gained 1.1 % of its energy by t = 40
+** at 16 cells; a brittle pull's bars ended with 1.2 times the grips'
+** work).  A slot is held where it and its partner still carry strength
+** and their law bonds them (contact.c decides the cut later in the step:
+** in the step of a cut the first half still holds).  What the held
+** velocity adds to the strain, dt/2 f_r . (v_drive - v_r^n), is booked
+** with the bonded impulses (hold_book, once the forces are known), as
+** bond_remap books the second half's.
+*/
+static int hold(sim *s) {
+  grid *g = &s->g;
+  size_t k;
+  int held = 0, d;
+  for (k = 0; k < g->nshared; k++) {
+    int32_t n = g->shared[k], q, sl, drv = -1;
+    const pairlaw *l;
+    for (q = g->head[n]; q >= 0; q = g->snext[q])
+      if (s->fdriven[g->sfield[q]] >= 0 && g->sm[q] > s->mcut) { drv = q; break; }
+    if (drv < 0) continue;
+    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
+      const double *vd = s->bodies[s->fdriven[g->sfield[drv]]].vdrive;
+      if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || !(g->sm[sl] > s->mcut)) continue;
+      if (!(g->sb[sl] > 0)) continue;
+      l = sim_law_of(s, g->sfield[sl], g->sfield[drv]);
+      if (!((l ? l->bond : s->cfg.bond_default) > 0)) continue;
+      for (d = 0; d < DIM; d++) {
+        g->sbd[d][sl] = vd[d] - g->sq[d][sl];
+        g->sq[d][sl] = vd[d];
+      }
+      held = 1;
+    }
+  }
+  return held;
+}
+
+static void hold_book(sim *s) {
+  const grid *g = &s->g;
+  double w = 0;
+  size_t k;
+  int d;
+  for (k = 0; k < g->nslot; k++)
+    for (d = 0; d < DIM; d++)
+      if (g->sbd[d][k] != 0)
+        w += (g->sf[d][k] - g->sm[k] * s->cfg.gravity[d]) * g->sbd[d][k];
+  s->e.bonding += 0.5 * s->dt * w;
+}
+
 int usf(sim *s) {
   sim_work *wk = &s->work;
+  int held = 0;
   par_run(wk->par, velocity_part, &s->g);
+  if (s->fbond >= 0 && s->ndriven) held = hold(s);
   /* where MUSL's remap holds the walls (gravity on), this velocity too,
   ** at the nodes where a wall acted in the last step: otherwise a body
   ** resting on a floor is pumped as boundary.c describes */
@@ -110,5 +164,6 @@ int usf(sim *s) {
   par_run(wk->par, gradient_part, s);
   if (constitutive(s, 0.5 * s->dt)) return -1;
   p2g_force(s);
+  if (held) hold_book(s);
   return 0;
 }

@@ -291,7 +291,7 @@ void bond_scatter(sim *s) { par_run(s->work.par, scatter_part, s); }
 ** first mode, gained 2.5 % / 0.56 % of its energy in 40 time units at
 ** 16 / 32 cells, booked as negative bonding loss; with the drive's
 ** velocity it keeps it within 0.5 %, tests/verify/bonds.lua). */
-static int32_t driven_slot(const sim *s, int32_t n) {
+int32_t bond_driven(const sim *s, int32_t n) {
   const grid *g = &s->g;
   int32_t q;
   for (q = g->head[n]; q >= 0; q = g->snext[q])
@@ -308,7 +308,7 @@ void bond_remap(sim *s) {
     int32_t n = g->snode[k], q;
     const double *vd = NULL;
     if (!g->sbonded[k]) continue;
-    if ((q = driven_slot(s, n)) >= 0) vd = s->bodies[s->fdriven[g->sfield[q]]].vdrive;
+    if ((q = bond_driven(s, n)) >= 0) vd = s->bodies[s->fdriven[g->sfield[q]]].vdrive;
     for (d = 0; d < DIM; d++) {
       double v = vd ? vd[d] : g->p[d][n];
       if (g->sm[k] > s->mcut) w += g->sbf[d][k] * (v - g->sp[d][k]);

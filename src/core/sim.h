@@ -419,7 +419,11 @@ enum { BF_W, BF_U = 1, BF_UU = 1 + DIM, BF_S = 1 + DIM + DIM * (DIM + 1) / 2,
 void bond_gather(sim *s);      /* bond.c: strength, stress at shared slots */
 void bond_scatter(sim *s);     /* bond.c: debonding back to particles */
 void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
-                                  remapped velocity (MUSL) */
+                                  remapped velocity (MUSL), or beside a
+                                  driven body the drive's */
+/* bond.c: the slot of a driven body with mass at node n, or -1 (the
+** partner contact.c gives every other slot there) */
+int32_t bond_driven(const sim *s, int32_t n);
 void book_finish(sim *s);     /* book.c: impulses' work, second half */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 /* wall_penalty.c: the penalty walls' forces on the particles, onto q;

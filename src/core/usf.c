@@ -119,13 +119,12 @@ static int hold(sim *s) {
   size_t k;
   int held = 0, d;
   for (k = 0; k < g->nshared; k++) {
-    int32_t n = g->shared[k], q, sl, drv = -1;
+    int32_t n = g->shared[k], sl, drv = bond_driven(s, n);
+    const double *vd;
     const pairlaw *l;
-    for (q = g->head[n]; q >= 0; q = g->snext[q])
-      if (s->fdriven[g->sfield[q]] >= 0 && g->sm[q] > s->mcut) { drv = q; break; }
     if (drv < 0) continue;
+    vd = s->bodies[s->fdriven[g->sfield[drv]]].vdrive;
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
-      const double *vd = s->bodies[s->fdriven[g->sfield[drv]]].vdrive;
       if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || !(g->sm[sl] > s->mcut)) continue;
       if (!(g->sb[sl] > 0)) continue;
       l = sim_law_of(s, g->sfield[sl], g->sfield[drv]);

@@ -558,21 +558,25 @@ static double left(const grid *g, int32_t sl) {
 ** bond_scatter, and the interface is treated as debonded contact from
 ** this step on.  Returns 1 if bonded, 0 if not, -1 if cut now.
 */
-static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
-  const sim_cfg *cfg = &s->cfg;
-  grid *g = &s->g;
+double contact_bond(const sim *s, int32_t sl, int32_t o, int odriven) {
+  const grid *g = &s->g;
   const pairlaw *l;
-  double b, t, cap, bs = left(g, sl), bo = left(g, o);
+  double b, cap, bs = left(g, sl), bo = left(g, o);
   if (!(bs > 0) || !(bo > 0 || odriven)) return 0;
   l = sim_law_of(s, g->sfield[sl], g->sfield[o]);
-  cap = l ? l->bond : cfg->bond_default;
+  cap = l ? l->bond : s->cfg.bond_default;
   if (!(cap > 0)) return 0;
   b = odriven || bs < bo ? bs : bo;
-  t = traction(s, n, sl, odriven);
-  if (cap < b) b = cap;
-  if (t <= b) return 1;
-  g->scut[sl] += bs;
-  if (!odriven) g->scut[o] += bo;
+  return cap < b ? cap : b;
+}
+
+static int bonded(sim *s, int32_t n, int32_t sl, int32_t o, int odriven) {
+  grid *g = &s->g;
+  double b = contact_bond(s, sl, o, odriven);
+  if (!(b > 0)) return 0;
+  if (traction(s, n, sl, odriven) <= b) return 1;
+  g->scut[sl] += left(g, sl);
+  if (!odriven) g->scut[o] += left(g, o);
   return -1;
 }
 

@@ -76,7 +76,7 @@ static void slots_free(grid *g) {
     free(g->sp[d]); free(g->sf[d]); free(g->sq[d]);
     free(g->sg[d]); free(g->sn[d]);
     free(g->sfi[d]); free(g->sni[d]);
-    free(g->sbi[d]); free(g->sbf[d]); free(g->sbd[d]);
+    free(g->sbi[d]); free(g->sbf[d]);
   }
 }
 
@@ -155,7 +155,6 @@ static int slots_grow(grid *g) {
     GROW(g->sn[d], double, cap);
     GROW(g->sfi[d], double, cap); GROW(g->sni[d], double, cap);
     GROW(g->sbi[d], double, cap); GROW(g->sbf[d], double, cap);
-    GROW(g->sbd[d], double, cap);
   }
   g->slotcap = cap;
   return 0;
@@ -222,7 +221,6 @@ void grid_slots_clear(grid *g, size_t s0, size_t s1) {
     memset(g->sfi[d] + s0, 0, n);
     memset(g->sni[d] + s0, 0, n);
     memset(g->sbi[d] + s0, 0, n); /* sbf: written where it is read */
-    memset(g->sbd[d] + s0, 0, n);
   }
   if (g->moments) {
     memset(g->sw + s0, 0, n);

@@ -47,9 +47,6 @@ typedef struct grid {
   ** slot's dt f less gravity's, the internal force's impulse (contact.c;
   ** book.c and bond_remap book their work) */
   double *sbi[DIM], *sbf[DIM];
-  /* USAVG: how far the first half-step moved a bonded slot beside a
-  ** driven body, v_drive - v^n (usf.c; zero elsewhere) */
-  double *sbd[DIM];
   double *sext;        /* reach of the field's material along its normal */
   /* bonds (bond.c), filled only in scenes with bonds: the field's
   ** mass-weighted bond strength, its volume gradient sum_p V_p grad S_ip

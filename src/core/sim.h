@@ -424,6 +424,11 @@ void bond_remap(sim *s);       /* bond.c: bonded slots take the node's
 /* bond.c: the slot of a driven body with mass at node n, or -1 (the
 ** partner contact.c gives every other slot there) */
 int32_t bond_driven(const sim *s, int32_t n);
+/* contact.c: the strength of the bond between slot sl and its partner o
+** (odriven: o is a driven body's) as the bond test reads it, the least
+** of both sides' (a drive's: the slot's) and their law's cap; 0 where
+** either side has none left or the law does not bond them */
+double contact_bond(const sim *s, int32_t sl, int32_t o, int odriven);
 void book_finish(sim *s);     /* book.c: impulses' work, second half */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 /* wall_penalty.c: the penalty walls' forces on the particles, onto q;

@@ -111,51 +111,44 @@ static void gradient_part(void *arg, int t, int nparts) {
 ** and their law bonds them (contact.c decides the cut later in the step:
 ** in the step of a cut the first half still holds).  What the held
 ** velocity adds to the strain, dt/2 f_r . (v_drive - v_r^n), is booked
-** with the bonded impulses (hold_book, once the forces are known), as
-** bond_remap books the second half's.
+** with the bonded impulses by a second pass once the forces are known
+** (v_r^n is still p_r / m_r then), as bond_remap books the second
+** half's.  book = 0: hold, and say whether any slot was held; book = 1:
+** book what the hold added.
 */
-static int hold(sim *s) {
+static int hold(sim *s, int book) {
   grid *g = &s->g;
   size_t k;
+  double w = 0;
   int held = 0, d;
   for (k = 0; k < g->nshared; k++) {
     int32_t n = g->shared[k], sl, drv = bond_driven(s, n);
     const double *vd;
-    const pairlaw *l;
     if (drv < 0) continue;
     vd = s->bodies[s->fdriven[g->sfield[drv]]].vdrive;
     for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
-      if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || !(g->sm[sl] > s->mcut)) continue;
-      if (!(g->sb[sl] > 0)) continue;
-      l = sim_law_of(s, g->sfield[sl], g->sfield[drv]);
-      if (!((l ? l->bond : s->cfg.bond_default) > 0)) continue;
-      for (d = 0; d < DIM; d++) {
-        g->sbd[d][sl] = vd[d] - g->sq[d][sl];
-        g->sq[d][sl] = vd[d];
-      }
+      if (sl == drv || s->fdriven[g->sfield[sl]] >= 0 || !(g->sm[sl] > s->mcut) ||
+          !(contact_bond(s, sl, drv, 1) > 0))
+        continue;
       held = 1;
+      for (d = 0; d < DIM; d++) {
+        if (book) /* v^n as velocity() made it */
+          w += (g->sf[d][sl] - g->sm[sl] * s->cfg.gravity[d]) *
+               (vd[d] - g->sp[d][sl] * (1.0 / g->sm[sl]));
+        else
+          g->sq[d][sl] = vd[d];
+      }
     }
   }
+  if (book) s->e.bonding += 0.5 * s->dt * w;
   return held;
-}
-
-static void hold_book(sim *s) {
-  const grid *g = &s->g;
-  double w = 0;
-  size_t k;
-  int d;
-  for (k = 0; k < g->nslot; k++)
-    for (d = 0; d < DIM; d++)
-      if (g->sbd[d][k] != 0)
-        w += (g->sf[d][k] - g->sm[k] * s->cfg.gravity[d]) * g->sbd[d][k];
-  s->e.bonding += 0.5 * s->dt * w;
 }
 
 int usf(sim *s) {
   sim_work *wk = &s->work;
   int held = 0;
   par_run(wk->par, velocity_part, &s->g);
-  if (s->fbond >= 0 && s->ndriven) held = hold(s);
+  if (s->fbond >= 0 && s->ndriven) held = hold(s, 0);
   /* where MUSL's remap holds the walls (gravity on), this velocity too,
   ** at the nodes where a wall acted in the last step: otherwise a body
   ** resting on a floor is pumped as boundary.c describes */
@@ -163,6 +156,6 @@ int usf(sim *s) {
   par_run(wk->par, gradient_part, s);
   if (constitutive(s, 0.5 * s->dt)) return -1;
   p2g_force(s);
-  if (held) hold_book(s);
+  if (held) hold(s, 1);
   return 0;
 }

@@ -43,9 +43,10 @@ function H.check(rec, tol)
   tol = tol or {}
   V.holds("no NaN or Inf in energies and momenta", not rec.nan, rec.steps)
   V.above("smallest det F over the run (> 0)", rec.jmin, 1e-12)
-  -- the stored energy of the rate-form models is exact for small strain
-  -- only: at the peak of a violent impact it reads high and comes back,
-  -- hence a peak tolerance apart from the one at the end
+  -- the stored energy is exact at any strain (docs/algorithm.md section
+  -- 12), but a scheme may gain a little for a while (FLIP under MUSL in
+  -- a strip pulled to 50 %: 3 %), hence a peak tolerance apart from the
+  -- one at the end
   V.below("peak of total energy above what came in / energy scale",
     rec.excess / math.max(rec.scale, 1e-300), tol.energy or 0.02)
   V.below("at the end: total energy above what came in / energy scale",

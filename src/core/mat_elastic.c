@@ -1,7 +1,7 @@
 /*
 ** mat_elastic.c - isotropic linear elasticity in rate form:
-**   sigma' = lambda tr(D) I + 2 G D    (objective: see material.h)
-** In plane strain D_zz = 0, so sigma_zz grows with lambda tr(D) only.
+**   tau' = lambda tr(D) I + 2 G D    (tau = J sigma, objective: material.h)
+** In plane strain D_zz = 0, so tau_zz grows with lambda tr(D) only.
 */
 #include "material.h"
 
@@ -20,10 +20,10 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     mat_get(ps, i, s);
     J = mat_kinematics(ps, i, dt, s, D, &rot);
     mat_hooke(s, D, dt, lam, g2);
-    mat_put(ps, i, s);
+    mat_put_tau(ps, i, s, J);
     mat_sum_j(sum, J);
     strain += ps->vol0[i] * mat_elastic_density(s, K, G);
-    power += J * ps->vol0[i] * mat_power(s, D);
+    power += ps->vol0[i] * mat_power(s, D);
   }
   sum->strain += strain;
   sum->power += power;

@@ -2,11 +2,12 @@
 ** mat_plastic.c - J2 (von Mises) elastic-plastic solid with linear
 ** isotropic hardening, for the grains.
 **
-** Elastic predictor: the objective rate form of mat_elastic.c.  Plastic
-** corrector: radial return of the trial deviator onto the yield surface
+** Elastic predictor: the objective rate form of mat_elastic.c, in the
+** Kirchhoff stress tau = J sigma (material.h).  Plastic corrector:
+** radial return of the trial deviator onto the yield surface
 **   q = sqrt(3/2 s:s) = yield + hardening * ep
-** where s is the full 3-D deviator (in plane strain sigma_zz is part of
-** it) and ep the equivalent plastic strain.  With linear hardening the
+** where s is the full 3-D deviator of tau (in plane strain tau_zz is part
+** of it) and ep the equivalent plastic strain.  With linear hardening the
 ** return is closed form: dep = (q_trial - q_y) / (3G + H), and along a
 ** path of fixed deviatoric direction it reproduces the exact solution
 ** for any step size (including the step that crosses the yield point).
@@ -16,8 +17,9 @@
 **   dW = dep (q_y(ep) + H dep / 2)
 ** It is kept per unit reference volume in the field "plastic_work" and
 ** summed into the energy budget; like the stored energy (the elastic
-** energy of the stress, so the elastic part only) it is reckoned per
-** reference volume, the small-strain convention of every model here.
+** energy of tau, so the elastic part only) it is reckoned per reference
+** volume: it is tau : D_p, the work the grid's forces do per reference
+** volume on the plastic part of D, at any strain.
 */
 #include <math.h>
 #include "material.h"
@@ -67,10 +69,10 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
         heat += hw;
       }
     }
-    mat_put(ps, i, s);
+    mat_put_tau(ps, i, s, J);
     mat_sum_j(sum, J);
     strain += ps->vol0[i] * mat_elastic_density(s, K, G);
-    power += J * ps->vol0[i] * mat_power(s, D);
+    power += ps->vol0[i] * mat_power(s, D);
   }
   sum->strain += strain;
   sum->power += power;

@@ -23,9 +23,13 @@
 ** with f(u) = u - 2 (1 - e^-u) + (1 - e^-2u) / 2 = u^3/3 - u^4/4 + ...,
 ** summed as its series for small u where the closed form cancels.
 ** It is kept per unit reference volume in "viscous_work" (like the
-** stored energy: the small-strain convention) and summed into the energy
-** budget.  Stored energy: p^2/(2K) + |s_inf|^2/(4 G_inf) +
+** stored energy) and summed into the energy budget.  Stored energy: p^2/(2K) + |s_inf|^2/(4 G_inf) +
 ** sum |s_k|^2/(4 G_k).
+**
+** All of it is written for the Kirchhoff stress tau = J sigma
+** (material.h): p, s_inf and the s_k are parts of tau, the element
+** stresses stored as such, and the stored energy and the dissipation are
+** per reference volume, exact against the grid's work at any strain.
 **
 ** Element stresses are deviatoric, so each is stored without its zz
 ** (= -(xx + yy)): xx, yy, xy in 2-D, xx, yy, xy, yz, xz in 3-D, in the fields "maxwell1" .. "maxwellN", one per element
@@ -127,7 +131,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     vw[i] += w;
     visc += ps->vol0[i] * w;
     if (hq) hq[i] += ps->vol0[i] * w; /* heat.h: all of it is heat */
-    mat_put(ps, i, s);
+    mat_put_tau(ps, i, s, J);
     mat_sum_j(sum, J);
     {
       double p, dv[NSTRESS], r;
@@ -143,7 +147,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
       }
     }
     strain += ps->vol0[i] * en;
-    power += J * ps->vol0[i] * mat_power(s, D);
+    power += ps->vol0[i] * mat_power(s, D);
   }
   sum->strain += strain;
   sum->power += power;
@@ -151,9 +155,10 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
 }
 
 static double energy(const material *m, const particles *ps, size_t i) {
-  double s[NSTRESS], dv[NSTRESS], p, en = 0;
+  double s[NSTRESS], dv[NSTRESS], p, en = 0, J = mat_jacobian(ps, i);
   int k;
   mat_get(ps, i, s);
+  for (k = 0; k < NSTRESS; k++) s[k] *= J; /* tau, as update() stores */
   (void)mat_deviator(s, &p, dv);
   for (k = 0; k < m->nprony; k++) {
     double *ak[MAT_NDEV], x[NSTRESS];

@@ -8,9 +8,18 @@
 ** Stress is updated in rate form with an objective rate: the stress is
 ** first rotated by the incremental rotation of the step (Hughes-Winget,
 ** exactly orthogonal), then the model adds its increment from the rate
-** of deformation D.  This is the small-strain, objective-rate convention;
-** K is the 3-D bulk modulus and the out-of-plane stress follows from
-** eps_zz = 0 (plane strain).
+** of deformation D.  K is the 3-D bulk modulus and the out-of-plane
+** stress follows from eps_zz = 0 (plane strain).
+**
+** The rate form is written for the Kirchhoff stress tau = J sigma, not
+** the Cauchy stress the particles store: the models take tau from
+** mat_kinematics and store tau / J (mat_put_tau).  Why: the grid's forces
+** do the work J V0 sigma : D = V0 tau : D, and an isotropic law's
+** rotation leaves tau : C^-1 : tau unchanged, so the stored energy
+** V0 (tau : C^-1 : tau) / 2 per reference volume changes by exactly that
+** work at any strain.  Written for sigma, the energy read V0 J times too
+** little work (a strip stretched 50 % left 9 % of the work unbooked).
+** Its volume part is Hencky's, tau_m = K ln J.
 */
 #ifndef mvmpm_material_h
 #define mvmpm_material_h
@@ -211,14 +220,28 @@ static inline void mat_rotate(const mat_rot *r, double *s) {
 #endif
 }
 
+/* det F of particle i */
+static inline double mat_jacobian(const particles *ps, size_t i) {
+  double F[NTENS];
+  int k;
+  for (k = 0; k < NTENS; k++) F[k] = ps->F[k][i];
+  return vec_det(F);
+}
+
 /*
 ** The kinematic part every model shares, for particle i: D (symmetric,
 ** stored as NSTRESS components in stress order, zz = 0 in plane strain),
-** the incremental rotation applied to the stress in s[] (and returned in
-** r for the models' other state), and F <- (I + dt L) F.  Returns det F.
+** the Cauchy stress in s[] turned into the Kirchhoff stress (times det F
+** at the step's start) and rotated by the incremental rotation (returned
+** in r for the models' other state), and F <- (I + dt L) F.  Returns the
+** new det F, by which mat_put_tau divides.
 */
 static inline double mat_kinematics(particles *ps, size_t i, double dt,
                                     double *s, double *D, mat_rot *r) {
+  double J0 = mat_jacobian(ps, i);
+  int c;
+  for (c = 0; c < NSTRESS; c++) s[c] *= J0;
+  {
 #if DIM == 2
   double L00 = ps->L[0][i], L01 = ps->L[1][i];
   double L10 = ps->L[2][i], L11 = ps->L[3][i];
@@ -252,6 +275,7 @@ static inline double mat_kinematics(particles *ps, size_t i, double dt,
 #else
 #error "mat_kinematics: DIM must be 2 or 3"
 #endif
+  }
 }
 
 /* split a stress into its mean p and deviator d (all NSTRESS components,
@@ -318,7 +342,14 @@ static inline void mat_put(particles *ps, size_t i, const double *s) {
   int k;
   for (k = 0; k < NSTRESS; k++) ps->s[k][i] = s[k];
 }
-/* stress power density sigma : D */
+/* store the Kirchhoff stress tau of particle i as Cauchy's, tau / J */
+static inline void mat_put_tau(particles *ps, size_t i, const double *tau,
+                               double J) {
+  double r = 1.0 / J;
+  int k;
+  for (k = 0; k < NSTRESS; k++) ps->s[k][i] = tau[k] * r;
+}
+/* stress power density tau : D (per reference volume) */
 static inline double mat_power(const double *s, const double *D) {
 #if DIM == 2
   return s[S_XX] * D[S_XX] + s[S_YY] * D[S_YY] + 2 * s[S_XY] * D[S_XY];

@@ -40,14 +40,19 @@ int thermal_uniform(sim *s, double T) {
   return 0;
 }
 
-/* add -3 K alpha dT to the normal stresses of particle i; the work of
-** the increment at its mean stress */
+/* add -3 K alpha dT to the normal Kirchhoff stresses of particle i
+** (material.h: the models' stress is tau = J sigma); the work of the
+** increment at its mean stress, per reference volume as the models'
+** stored energy */
 double thermal_strain(const material *m, particles *ps, size_t i, double dT) {
-  double ds = -3.0 * m->K * m->alpha * dT;
-  double tr = ps->s[S_XX][i] + ps->s[S_YY][i] + ps->s[S_ZZ][i];
-  ps->s[S_XX][i] += ds;
-  ps->s[S_YY][i] += ds;
-  ps->s[S_ZZ][i] += ds;
+  double F[NTENS], J, ds = -3.0 * m->K * m->alpha * dT, tr;
+  int k;
+  for (k = 0; k < NTENS; k++) F[k] = ps->F[k][i];
+  J = vec_det(F);
+  tr = J * (ps->s[S_XX][i] + ps->s[S_YY][i] + ps->s[S_ZZ][i]);
+  ps->s[S_XX][i] += ds / J;
+  ps->s[S_YY][i] += ds / J;
+  ps->s[S_ZZ][i] += ds / J;
   return -ps->vol0[i] * m->alpha * dT * (tr + 1.5 * ds);
 }
 

@@ -19,9 +19,12 @@ do
   sim:body {shape = mvmpm.disk {center = {1.3, 0.5}, radius = 0.2}, material = soft, velocity = {-v, 0}}
   local rec = H.watch(sim)
   sim:run()
-  -- strains reach 0.4 at the contact: the small-strain energy measure
-  -- reads up to 7 % high at the peak (see mvmpm.hard)
-  H.check(rec, {energy = 0.1, momentum = 1e-12})
+  -- strains reach 0.4 at the contact; the stored energy is exact there
+  -- (the stress rate is written for the Kirchhoff stress,
+  -- docs/algorithm.md section 12): the total never rises above what came
+  -- in (written for the Cauchy stress it peaked 6.7 % above, and 10 %
+  -- was allowed here)
+  H.check(rec, {energy = 0.02, momentum = 1e-12})
 end
 
 V.case "mass ratio 1000: a dense disc strikes a light block"
@@ -38,11 +41,11 @@ end
 
 V.case "a square lands on its corner on a block"
 do
-  -- K = 10: the corner digs in to det F 0.68 at 0.07 c_L; with K = 1 the
+  -- K = 10: the corner digs in to det F 0.79 at 0.07 c_L; with K = 1 the
   -- block sags under gravity to strains near 0.3 and the square's corner
-  -- crushes to det F 0.25, where the rate-form models' stored energy
-  -- (the small-strain measure, docs/stability.md) reads 4-6 % high: that
-  -- run is below, reported
+  -- crushes to det F 0.42: asserted too since the stored energy is exact
+  -- at any strain (it read 4-6 % high when the stress rate was written
+  -- for the Cauchy stress, docs/stability.md)
   local function corner(K)
     local m = mvmpm.elastic {K = K, G = K / 2, density = 1}
     local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 32, sides = "wall",
@@ -58,8 +61,10 @@ do
   H.check(corner(10), {energy = 0.02})
   local soft_rec = corner(1)
   V.info("K = 1 (strains near 0.3): smallest det F", soft_rec.jmin)
-  V.info("K = 1: total energy above what came in at the end / energy scale",
-         soft_rec.final / soft_rec.scale)
+  V.below("K = 1: peak of total energy above what came in / energy scale",
+          soft_rec.excess / soft_rec.scale, 0.02)
+  V.below("K = 1: at the end: total energy above what came in / energy scale",
+          soft_rec.final / soft_rec.scale, 0.01)
 end
 
 V.case "a stiff block resting on a floor under gravity, 13,000 steps"

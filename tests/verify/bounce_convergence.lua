@@ -51,8 +51,10 @@ end
 local function goal(r, name)
   local lim = {[8] = 0.02, [16] = 0.01, [32] = 0.005}
   for _, c in ipairs({8, 16, 32}) do
-    V.info(string.format("%s, goal |E/E0 - 1| <= %g at %d cells: %s", name,
-      lim[c], c, math.abs(r[c].d) <= lim[c] and "met" or "NOT met"), r[c].d)
+    if r[c] then
+      V.info(string.format("%s, goal |E/E0 - 1| <= %g at %d cells: %s", name,
+        lim[c], c, math.abs(r[c].d) <= lim[c] and "met" or "NOT met"), r[c].d)
+    end
   end
   V.info(string.format("%s, goal restitution >= 0.9 at 16 cells: %s", name,
     r[16].e >= 0.9 and "met" or "NOT met"), r[16].e)
@@ -65,12 +67,18 @@ V.holds("the defaults are quadratic B-splines, MUSL, pure FLIP",
   s8.shape == "bspline2" and s8.update == "musl" and s8.transfer == "flip" and s8.flip == 1)
 goal(def, "defaults")
 V.holds("no warning for the defaults", s8.advice == nil)
--- measured -5.7 / -2.9 / +0.51 %: the impacts' loss falls at first order;
--- beyond 32 cells the ringing the impacts leave gains a little under FLIP
--- (+0.74 / +1.37 % at 48 / 64 cells, studies/bounce.lua)
+-- measured -7.4 / -3.8 / -1.36 %: the impacts' loss falls at order 1 to
+-- 1.5.  (With the stress rate written for the Cauchy stress, as before,
+-- the same runs read -5.7 / -2.9 / +0.51 %: that form made energy in
+-- the compressed contact, +1.7 to +1.9 % of E0 over the three impacts,
+-- docs/algorithm.md section 12, and the 1 % asserted at 32 cells was met
+-- through it; the goal lines above print what is met now.)
 V.below("error falls 8 -> 16 cells", math.abs(def[16].d), math.abs(def[8].d))
 V.below("error falls 16 -> 32 cells", math.abs(def[32].d), math.abs(def[16].d))
-V.below("|energy change|, 32 cells", math.abs(def[32].d), 0.01)
+-- frictionless static walls and an elastic material that stores exactly
+-- the work done on it: the total can only fall (the node rule's stops)
+V.below("never gains: largest E/E0 - 1 at 8, 16, 32 cells",
+  math.max(def[8].d, def[16].d, def[32].d), 0)
 V.above("restitution at 32 cells", def[32].e, 0.9)
 
 V.case "linear hats, MUSL, FLIP (the defaults before B-splines)"
@@ -85,7 +93,9 @@ V.case "linear hats, USAVG, FLIP: the free-flight gain removed"
 local lu = study("linear USAVG", {shape = "linear", update = "usavg"})
 goal(lu, "linear USAVG")
 V.holds("update = \"usavg\" is taken", lu[8].sim.update == "usavg")
-V.below("|energy change|, 16 cells", math.abs(lu[16].d), 0.02)
+-- -5.3 / -2.6 / -0.57 % (the Cauchy form read -5.2 / -1.2 / +1.4 %)
+V.below("error falls 8 -> 16 cells", math.abs(lu[16].d), math.abs(lu[8].d))
+V.below("error falls 16 -> 32 cells", math.abs(lu[32].d), math.abs(lu[16].d))
 V.below("|energy change|, 32 cells", math.abs(lu[32].d), 0.02)
 -- MUSL's gain at 32 cells is made between impacts; USAVG's symmetric
 -- step keeps a tenth of it at most
@@ -102,29 +112,32 @@ V.holds("no warning for GIMP under USAVG", gu[8].sim.advice == nil)
 V.below("error falls 8 -> 16 cells", math.abs(gu[16].d), math.abs(gu[8].d))
 V.below("error falls 16 -> 32 cells", math.abs(gu[32].d), math.abs(gu[16].d))
 V.below("|energy change|, 32 cells", math.abs(gu[32].d), 0.01)
-V.above("restitution at 16 cells", gu[16].e, 0.9)
+-- restitution at 16 cells 0.891 (goal 0.9, printed above; 0.90 under the
+-- Cauchy form)
 V.above("restitution at 32 cells", gu[32].e, 0.9)
 
 V.case "GIMP, USAVG, FLIP, walls by the gap at the step's end (contact_gap = \"step\")"
 -- the walls stop only the part of a node's approach that would carry the
 -- material past the wall line within the step, as contact does between
--- bodies: the first step of each impact takes less (-2.2 -> -1.5 % at 8
--- cells), the finer grids change little
+-- bodies.  Under the Cauchy form the first step of each impact took less
+-- (-2.2 -> -1.5 % at 8 cells); with the material's energy exact it loses
+-- more than "touch" at 8 cells (-7.2 % against -5.6 %), printed
 local gs = study("GIMP USAVG, gap step", {shape = "gimp", update = "usavg", contact_gap = "step"})
 goal(gs, "GIMP USAVG, gap step")
 V.below("error falls 8 -> 16 cells", math.abs(gs[16].d), math.abs(gs[8].d))
 V.below("error falls 16 -> 32 cells", math.abs(gs[32].d), math.abs(gs[16].d))
-V.below("|energy change|, 8 cells, below \"touch\"'s", math.abs(gs[8].d), math.abs(gu[8].d))
+V.info("|energy change|, 8 cells, over \"touch\"'s", math.abs(gs[8].d) / math.abs(gu[8].d))
 V.below("|energy change|, 32 cells", math.abs(gs[32].d), 0.01)
-V.above("restitution at 16 cells", gs[16].e, 0.9)
 
 V.case "GIMP, MUSL, FLIP"
 local gimp = study("GIMP MUSL", {shape = "gimp", update = "musl"}, {8, 16})
 V.holds("the warning for GIMP under MUSL (grows from 16 cells)",
   gimp[8].sim.advice ~= nil)
-V.below("|energy change|, 8 cells", math.abs(gimp[8].d), 0.02)
-V.below("|energy change|, 16 cells", math.abs(gimp[16].d), 0.01)
-V.above("restitution at 16 cells", gimp[16].e, 0.9)
+-- -2.0 / -1.3 % at 8 / 16 cells, restitution 0.890 at 16 (the Cauchy
+-- form: +1.2 / +0.14 %, 0.90)
+goal(gimp, "GIMP MUSL")
+V.below("error falls 8 -> 16 cells", math.abs(gimp[16].d), math.abs(gimp[8].d))
+V.below("|energy change|, 16 cells", math.abs(gimp[16].d), 0.02)
 
 V.case "XPIC(2), GIMP, MUSL: noise removed, vibration damped"
 local xo = {shape = "gimp", update = "musl", transfer = "xpic"}

@@ -4,12 +4,18 @@
 -- 1. Free thermal expansion: an unconfined square (K = 1, G = 0.5, so
 --    nu = 2/7) heated slowly by dT expands in plane by (1 + nu) alpha dT
 --    (plane strain, eps_zz = 0, 3-D K) and stays free of in-plane stress,
---    while sigma_zz = -E alpha dT.  The heating ramp lasts 40 transit
+--    while tau_zz = J sigma_zz = -E alpha dT (the models' rate form is
+--    written for the Kirchhoff stress, docs/algorithm.md section 12: the
+--    square grows by J = 1.053 and sigma_zz is 0.950 of that).  The heating ramp lasts 40 transit
 --    times of a longitudinal wave across the square, so the dynamic
 --    overshoot is of order 1/40 of the strain: tolerance 5 %.
 -- 2. A plastic disc thrown at a wall: plastic work appears in the energy
---    budget and closes it (the elastic disc of the same scene closes to
---    0.2 % of its energy; 2 % is allowed for the plastic one).
+--    budget.  What the budget leaves is the contact's unbooked loss at the
+--    impact (the elastic disc of the same scene leaves +0.5 % of its
+--    energy, the plastic one +2.6 %): a loss, never a gain, since the
+--    material stores and dissipates exactly the work done on it.  (With
+--    the rate written for the Cauchy stress the plastic disc closed to
+--    0.07 %: that form made energy in compression, which hid the loss.)
 -- 3. A viscoelastic disc thrown at a wall: the same with viscous work.
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
@@ -48,7 +54,9 @@ do
   V.near("in-plane strain log F_xx / (1+nu) alpha dT", math.log(mean(F.xx)) / free, 1, 0.05, true)
   V.near("in-plane strain log F_yy / (1+nu) alpha dT", math.log(mean(F.yy)) / free, 1, 0.05, true)
   V.below("|mean sigma_xx| / 3 K alpha dT", math.abs(mean(s.xx)) / (3 * K * alpha * dT), 0.05)
-  V.near("sigma_zz / (-E alpha dT)", mean(s.zz) / (-E * alpha * dT), 1, 0.05, true)
+  local tzz = {}
+  for i = 1, #s.zz do tzz[i] = s.zz[i] * (F.xx[i] * F.yy[i] - F.xy[i] * F.yx[i]) end
+  V.near("tau_zz = J sigma_zz over -E alpha dT", mean(tzz) / (-E * alpha * dT), 1, 0.05, true)
   local e = sim:energy()
   V.above("thermal work > 0", e.thermal_work, 0)
   V.below("|energy residual| / thermal work", math.abs(e.residual) / e.thermal_work, 0.05)
@@ -56,8 +64,8 @@ end
 
 -- a disc of radius 0.4 at speed 0.1 toward the right wall, 0.2 away;
 -- it hits at t = 2 and is followed for the rebound
-local function disc_at_wall(mat)
-  local sim = mvmpm.sim {domain = {x = {0, 2}, y = {0, 2}}, cell = 1 / 16, t_end = 7.5}
+local function disc_at_wall(mat, cells)
+  local sim = mvmpm.sim {domain = {x = {0, 2}, y = {0, 2}}, cell = 1 / (cells or 16), t_end = 7.5}
   sim:body {shape = mvmpm.disk {center = {1.0, 1.0}, radius = 0.4},
             material = mat, velocity = {0.1, 0}, volume = "exact"}
   local e0 = sim:energy().total
@@ -77,7 +85,14 @@ do
   V.above("plastic work / initial kinetic energy", e.plastic / e0, 0.05)
   V.near("sum of particle plastic_work x volume0 / budget term", sum / e.plastic, 1, 1e-12)
   V.above("largest equivalent plastic strain", math.max(table.unpack(ep)), 0.01)
-  V.below("|energy residual| / initial", math.abs(e.residual) / e0, 0.02)
+  V.info("energy residual / initial (the impact's unbooked loss)", e.residual / e0)
+  V.above("residual >= 0: no energy made", e.residual / e0, 0)
+  V.below("residual / initial", e.residual / e0, 0.05)
+  -- the contact's loss converges: 2.5 % at 16 cells, 1.0 % at 32
+  local _, e32, e032 = disc_at_wall(m, 32)
+  V.info("32 cells: energy residual / initial", e32.residual / e032)
+  V.above("32 cells: residual >= 0", e32.residual / e032, 0)
+  V.below("residual falls 16 -> 32 cells, by half at least", e32.residual / e032, 0.5 * e.residual / e0)
 end
 
 V.case "viscoelastic disc thrown at a wall (G_inf 0.1 + Prony 0.4 at tau 0.05)"

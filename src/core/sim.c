@@ -231,18 +231,18 @@ const char *sim_advice(const sim *s) {
   if (s->cfg.transfer != TRANSFER_FLIP || s->cfg.flip < 1 || !(walls || s->nfield > 1))
     return NULL;
   /* the 3-D sphere's bounce (docs/accuracy.md): linear hats under MUSL
-  ** lose 2.8 % at 8 cells, 0.7 % at 16 (and gained 1.6 % at 32 when
-  ** the stress rate was written for the Cauchy stress); GIMP under USAVG
+  ** lose 2.8 % at 8 cells, 0.7 % at 16, then gain 0.2 % at 24 and
+  ** 1.1 % at 32; GIMP under USAVG
   ** at cfl 0.4, with the longer step an impact takes fewer steps, at
   ** each of which the walls' impact loss is taken: 1.8 % at 8 cells,
   ** 0.8 % at 12, 0.13 % at 16 */
   if (DIM == 3 && s->cfg.shape == SHAPE_LINEAR)
     return "linear hats with pure FLIP (shape = \"linear\", flip = 1) gain "
            "energy after impacts on walls or between bodies at fine grids "
-           "(the 3-D sphere's bounce under MUSL: -2.8 %, -2.0 %, -0.7 % "
-           "after three impacts at 8, 12, 16 cells per diameter, gaining "
-           "beyond); the default shape (B-splines) falls (-5.6 %, -4.7 % at "
-           "8, 12); for 3-D impacts shape = \"gimp\", update = \"usavg\", "
+           "(the 3-D sphere's bounce under MUSL: -2.8 %, -0.7 %, +0.2 %, "
+           "+1.1 % after three impacts at 8, 16, 24, 32 cells per "
+           "diameter); the default shape (B-splines) falls (-5.6 %, -4.7 % "
+           "at 8, 12); for 3-D impacts shape = \"gimp\", update = \"usavg\", "
            "cfl = 0.4 gives -1.8 %, -0.8 %, +0.13 % at 8, 12, 16 "
            "(docs/accuracy.md)";
   /* measured on the frictionless bouncing disc (docs/accuracy.md): the

@@ -23,8 +23,8 @@
 ** with f(u) = u - 2 (1 - e^-u) + (1 - e^-2u) / 2 = u^3/3 - u^4/4 + ...,
 ** summed as its series for small u where the closed form cancels.
 ** It is kept per unit reference volume in "viscous_work" (like the
-** stored energy) and summed into the energy budget.  Stored energy: p^2/(2K) + |s_inf|^2/(4 G_inf) +
-** sum |s_k|^2/(4 G_k).
+** stored energy) and summed into the energy budget.  Stored energy:
+** p^2/(2K) + |s_inf|^2/(4 G_inf) + sum |s_k|^2/(4 G_k).
 **
 ** All of it is written for the Kirchhoff stress tau = J sigma
 ** (material.h): p, s_inf and the s_k are parts of tau, the element

@@ -238,10 +238,9 @@ static inline double mat_jacobian(const particles *ps, size_t i) {
 */
 static inline double mat_kinematics(particles *ps, size_t i, double dt,
                                     double *s, double *D, mat_rot *r) {
-  double J0 = mat_jacobian(ps, i);
+  const double J0 = mat_jacobian(ps, i); /* sigma -> tau */
   int c;
   for (c = 0; c < NSTRESS; c++) s[c] *= J0;
-  {
 #if DIM == 2
   double L00 = ps->L[0][i], L01 = ps->L[1][i];
   double L10 = ps->L[2][i], L11 = ps->L[3][i];
@@ -275,7 +274,6 @@ static inline double mat_kinematics(particles *ps, size_t i, double dt,
 #else
 #error "mat_kinematics: DIM must be 2 or 3"
 #endif
-  }
 }
 
 /* split a stress into its mean p and deviator d (all NSTRESS components,

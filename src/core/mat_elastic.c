@@ -17,7 +17,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     double J;
     mat_rot rot;
     if (bmat[ps->body[i]] != id) continue;
-    mat_get(ps, i, s);
+    mat_get_tau(ps, i, s);
     J = mat_kinematics(ps, i, dt, s, D, &rot);
     mat_hooke(s, D, dt, lam, g2);
     mat_put_tau(ps, i, s, J);

@@ -49,7 +49,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     double J, p, q, qy;
     mat_rot rot;
     if (bmat[ps->body[i]] != id) continue;
-    mat_get(ps, i, s);
+    mat_get_tau(ps, i, s);
     J = mat_kinematics(ps, i, dt, s, D, &rot);
     mat_hooke(s, D, dt, lam, g2); /* the elastic trial stress */
     q = sqrt(1.5 * mat_deviator(s, &p, d));

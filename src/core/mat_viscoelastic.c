@@ -102,7 +102,7 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
     double J, tr, dd, w = 0, en;
     mat_rot rot;
     if (bmat[ps->body[i]] != id) continue;
-    mat_get(ps, i, s);
+    mat_get_tau(ps, i, s);
     J = mat_kinematics(ps, i, dt, s, D, &rot);
     /* plane strain: D_zz = 0, so d_zz = -tr D / 3 */
     tr = D[S_XX] + D[S_YY] + D[S_ZZ];
@@ -155,10 +155,9 @@ static void update(const material *m, particles *ps, const int32_t *bmat,
 }
 
 static double energy(const material *m, const particles *ps, size_t i) {
-  double s[NSTRESS], dv[NSTRESS], p, en = 0, J = mat_jacobian(ps, i);
+  double s[NSTRESS], dv[NSTRESS], p, en = 0;
   int k;
-  mat_get(ps, i, s);
-  for (k = 0; k < NSTRESS; k++) s[k] *= J; /* tau, as update() stores */
+  mat_get_tau(ps, i, s); /* as update() works */
   (void)mat_deviator(s, &p, dv);
   for (k = 0; k < m->nprony; k++) {
     double *ak[MAT_NDEV], x[NSTRESS];

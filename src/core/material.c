@@ -58,9 +58,6 @@ int material_viscoelastic(material *m, const char *name, double rho,
 double material_elastic_energy(const material *m, const particles *ps,
                                size_t i) {
   double s[NSTRESS];
-  double J = mat_jacobian(ps, i);
-  int k;
-  mat_get(ps, i, s);
-  for (k = 0; k < NSTRESS; k++) s[k] *= J; /* tau: material.h */
+  mat_get_tau(ps, i, s); /* material.h: the energy of tau */
   return ps->vol0[i] * mat_elastic_density(s, m->K, m->G);
 }

@@ -12,8 +12,8 @@
 ** stress follows from eps_zz = 0 (plane strain).
 **
 ** The rate form is written for the Kirchhoff stress tau = J sigma, not
-** the Cauchy stress the particles store: the models take tau from
-** mat_kinematics and store tau / J (mat_put_tau).  Why: the grid's forces
+** the Cauchy stress the particles store: the models read tau
+** (mat_get_tau) and store tau / J (mat_put_tau).  Why: the grid's forces
 ** do the work J V0 sigma : D = V0 tau : D, and an isotropic law's
 ** rotation leaves tau : C^-1 : tau unchanged, so the stored energy
 ** V0 (tau : C^-1 : tau) / 2 per reference volume changes by exactly that
@@ -231,16 +231,13 @@ static inline double mat_jacobian(const particles *ps, size_t i) {
 /*
 ** The kinematic part every model shares, for particle i: D (symmetric,
 ** stored as NSTRESS components in stress order, zz = 0 in plane strain),
-** the Cauchy stress in s[] turned into the Kirchhoff stress (times det F
-** at the step's start) and rotated by the incremental rotation (returned
-** in r for the models' other state), and F <- (I + dt L) F.  Returns the
-** new det F, by which mat_put_tau divides.
+** the stress in s[] (the Kirchhoff stress, from mat_get_tau) rotated by
+** the incremental rotation (returned in r for the models' other state),
+** and F <- (I + dt L) F.  Returns the new det F, by which mat_put_tau
+** divides.
 */
 static inline double mat_kinematics(particles *ps, size_t i, double dt,
                                     double *s, double *D, mat_rot *r) {
-  const double J0 = mat_jacobian(ps, i); /* sigma -> tau */
-  int c;
-  for (c = 0; c < NSTRESS; c++) s[c] *= J0;
 #if DIM == 2
   double L00 = ps->L[0][i], L01 = ps->L[1][i];
   double L10 = ps->L[2][i], L11 = ps->L[3][i];
@@ -339,6 +336,12 @@ static inline void mat_get(const particles *ps, size_t i, double *s) {
 static inline void mat_put(particles *ps, size_t i, const double *s) {
   int k;
   for (k = 0; k < NSTRESS; k++) ps->s[k][i] = s[k];
+}
+/* the Kirchhoff stress tau = J sigma of particle i, J = det F now */
+static inline void mat_get_tau(const particles *ps, size_t i, double *tau) {
+  const double J = mat_jacobian(ps, i);
+  int k;
+  for (k = 0; k < NSTRESS; k++) tau[k] = J * ps->s[k][i];
 }
 /* store the Kirchhoff stress tau of particle i as Cauchy's, tau / J */
 static inline void mat_put_tau(particles *ps, size_t i, const double *tau,

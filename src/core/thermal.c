@@ -45,11 +45,8 @@ int thermal_uniform(sim *s, double T) {
 ** increment at its mean stress, per reference volume as the models'
 ** stored energy */
 double thermal_strain(const material *m, particles *ps, size_t i, double dT) {
-  double F[NTENS], J, ds = -3.0 * m->K * m->alpha * dT, tr;
-  int k;
-  for (k = 0; k < NTENS; k++) F[k] = ps->F[k][i];
-  J = vec_det(F);
-  tr = J * (ps->s[S_XX][i] + ps->s[S_YY][i] + ps->s[S_ZZ][i]);
+  const double J = mat_jacobian(ps, i), ds = -3.0 * m->K * m->alpha * dT;
+  const double tr = J * (ps->s[S_XX][i] + ps->s[S_YY][i] + ps->s[S_ZZ][i]);
   ps->s[S_XX][i] += ds / J;
   ps->s[S_YY][i] += ds / J;
   ps->s[S_ZZ][i] += ds / J;

@@ -47,9 +47,10 @@ int thermal_uniform(sim *s, double T) {
 double thermal_strain(const material *m, particles *ps, size_t i, double dT) {
   const double J = mat_jacobian(ps, i), ds = -3.0 * m->K * m->alpha * dT;
   const double tr = J * (ps->s[S_XX][i] + ps->s[S_YY][i] + ps->s[S_ZZ][i]);
-  ps->s[S_XX][i] += ds / J;
-  ps->s[S_YY][i] += ds / J;
-  ps->s[S_ZZ][i] += ds / J;
+  const double dsig = ds / J; /* the Cauchy stress's share */
+  ps->s[S_XX][i] += dsig;
+  ps->s[S_YY][i] += dsig;
+  ps->s[S_ZZ][i] += dsig;
   return -ps->vol0[i] * m->alpha * dT * (tr + 1.5 * ds);
 }
 

@@ -25,9 +25,13 @@ local P = mvmpm.params {
   wall_contact = "node", -- or "patch": the wall acts per contact patch;
                          -- "couple": ... with friction at the wall line
                          -- "penalty": the walls push the particles that
-                         -- reach them (docs/lua-api.md)
-  wall_stiffness = 2,    -- "penalty": the springs' stiffness (sim.wall_stiffness)
+                         -- reach them; "spring": each column of nodes at
+                         -- the wall (docs/lua-api.md)
+  wall_stiffness = -1,   -- "penalty", "spring": the springs' stiffness
+                         -- (sim.wall_stiffness); -1: the rule's default
   contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
+  speed = 0.1,         -- launch velocity (speed, speed)
+  K = 1, G = 0.5,      -- the disc's bulk and shear moduli
 }
 
 local h = 1 / P.cells
@@ -46,16 +50,16 @@ local sim = mvmpm.sim {
   sides = {"wall", friction = P.friction},
   contact = {separation = P.separation},
   wall_contact = P.wall_contact,
-  wall_stiffness = P.wall_stiffness,
+  wall_stiffness = opt(P.wall_stiffness),
   contact_gap = opt(P.contact_gap),
 }
 
-local disc = mvmpm.elastic {K = 1, G = 0.5, density = 1, name = "disc"}
+local disc = mvmpm.elastic {K = P.K, G = P.G, density = 1, name = "disc"}
 sim:body {
   name = "cylinder",
   shape = mvmpm.disk {center = {2.0, 1.0}, radius = 0.5},
   material = disc,
-  velocity = {0.1, 0.1},
+  velocity = {P.speed, P.speed},
 }
 sim:output {dir = "out/cylinder_bounce", every = 0.5, csv_every = 10}
 return sim

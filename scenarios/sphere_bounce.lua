@@ -26,8 +26,10 @@ local P = mvmpm.params {
   transfer = "default", -- or "flip", "apic" (gimp or bspline2), "xpic"
   xpic = 2,            -- XPIC's order (2 or 3)
   wall_contact = "node", -- or "patch", "couple", "penalty" (the walls push
-                         -- the particles that reach them: docs/lua-api.md)
-  wall_stiffness = 2,    -- "penalty": the springs' stiffness (sim.wall_stiffness)
+                         -- the particles that reach them), "spring" (each
+                         -- column of nodes at the wall): docs/lua-api.md
+  wall_stiffness = -1,   -- "penalty", "spring": the springs' stiffness
+                         -- (sim.wall_stiffness); -1: the rule's default
   contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
 }
 
@@ -47,7 +49,7 @@ local sim = mvmpm.sim {
   t_end = P.t_end,
   sides = {"wall", friction = P.friction},
   wall_contact = P.wall_contact,
-  wall_stiffness = P.wall_stiffness,
+  wall_stiffness = opt(P.wall_stiffness),
   contact_gap = opt(P.contact_gap),
 }
 

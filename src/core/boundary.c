@@ -115,36 +115,52 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
   return 1;
 }
 
-static void wall_line(sim *s, int k, int line, int first) {
+/* the node rule at column j of plane `line` of side k */
+static void wall_column(sim *s, int k, int line, int first, size_t j) {
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   side *sd = &s->sides[k];
   int d = k / 2;
   double sign = (k & 1) ? 1.0 : -1.0;
   double *const *mom = g->q, *const *smom = g->sq;
-  size_t j, nf = sd->next;
-  for (j = 0; j < nf; j++) {
-    int32_t n = grid_face_node(g, d, line, j), sl;
-    double imp[DIM];
-    int e;
-    unsigned char *act = sd->acted + (size_t)(line - first) * nf + j;
-    double gap = cfg->gap_check && !sd->mirror ? -sd->ext[j] : 0;
-    *act = 0;
-    if (g->m[n] <= s->mcut) continue;
-    if (gap > 0 && !cfg->gap_step) continue;
-    if (g->head[n] < 0) {
-      int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, 0, gap, imp,
-                        g->fi, g->ni);
-      *act = (unsigned char)a;
-      continue;
-    }
-    for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
-      if (g->sm[sl] <= s->mcut) continue;
-      if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, 1, gap, imp,
-                    g->sfi, g->sni) && act)
-        *act = 1;
-      for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
-    }
+  int32_t n = grid_face_node(g, d, line, j), sl;
+  double imp[DIM];
+  int e;
+  unsigned char *act = sd->acted + (size_t)(line - first) * sd->next + j;
+  double gap = cfg->gap_check && !sd->mirror ? -sd->ext[j] : 0;
+  *act = 0;
+  if (g->m[n] <= s->mcut) return;
+  if (gap > 0 && !cfg->gap_step) return;
+  if (g->head[n] < 0) {
+    int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, 0, gap, imp,
+                      g->fi, g->ni);
+    *act = (unsigned char)a;
+    return;
+  }
+  for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
+    if (g->sm[sl] <= s->mcut) continue;
+    if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, 1, gap, imp,
+                  g->sfi, g->sni))
+      *act = 1;
+    for (e = 0; e < DIM; e++) mom[e][n] += imp[e];
+  }
+}
+
+static void wall_line(sim *s, int k, int line, int first) {
+  size_t j;
+  for (j = 0; j < s->sides[k].next; j++) wall_column(s, k, line, first, j);
+}
+
+/* the springs' side (wall_spring.c): the node rule where a column holds
+** two fields */
+static void wall_springs(sim *s, int k, int first, int last) {
+  size_t j;
+  int line;
+  for (j = 0; j < s->sides[k].next; j++) {
+    for (line = first; line <= last; line++)
+      s->sides[k].acted[(size_t)(line - first) * s->sides[k].next + j] = 0;
+    if (!wall_spring_column(s, k, first, last, j))
+      for (line = first; line <= last; line++) wall_column(s, k, line, first, j);
   }
 }
 
@@ -595,6 +611,10 @@ void boundary_apply(sim *s) {
     if (s->sides[k].kind != SIDE_WALL) continue;
     if (sim_penalty_side(s, k)) continue;
     wall_lines(g, k, &first, &last);
+    if (cfg->wall_rule == WALL_SPRING && !s->sides[k].mirror) {
+      wall_springs(s, k, first, last);
+      continue;
+    }
     /* a mirror plane holds every node on it: no patches */
     if (cfg->wall_rule != WALL_NODE && !s->sides[k].mirror) {
       if (!heights && cfg->wall_rule == WALL_COUPLE) { patch_heights(s); heights = 1; }
@@ -683,7 +703,9 @@ void boundary_normal_set(sim *s, double *const a[DIM],
     size_t j;
     if (sd->kind != SIDE_WALL) continue;
     if (sim_penalty_side(s, k)) continue;
-    if (cfg->wall_rule != WALL_NODE && !sd->mirror) {
+    /* the springs' columns are not held (nothing stopped them); where a
+    ** column fell back on the node rule, its acted nodes are */
+    if (cfg->wall_rule != WALL_NODE && cfg->wall_rule != WALL_SPRING && !sd->mirror) {
       patch_normal_side(s, k, a, sa, v);
       continue;
     }

@@ -113,7 +113,7 @@ STENCIL_INLINE void box_init(box *bx, const sim *s) {
   }
   bx->anyhold = 0;
   for (k = 0; k < NSIDES; k++) {
-    bx->hold[k] = sim_penalty_side(s, k);
+    bx->hold[k] = sim_spring_side(s, k);
     bx->anyhold |= bx->hold[k];
   }
 }
@@ -460,7 +460,7 @@ static void finish(sim *s) {
   }
   s->e.kinetic = u.ke;
   s->e.potential = u.pe;
-  s->e.wall_spring = wall_penalty_energy(s); /* at the moved positions */
+  s->e.wall_spring = wall_penalty_energy(s) + wall_spring_energy(s); /* at the moved positions */
   for (d = 0; d < DIM; d++) s->e.mom[d] = u.mom[d];
   for (d = 0; d < 3; d++) s->e.angmom[d] = u.am[d];
   s->vmax = sqrt(u.v2max);

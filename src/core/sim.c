@@ -37,6 +37,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->fopen = -1;
   s->cfg.mcut_rel = 1e-9;
   s->cfg.wall_stiffness = 2;
+  s->cfg.wall_band = 2;
   s->cfg.sort_every = 20;
   s->cfg.ppc = ppc;
   s->cfg.lp = 0.5 / ppc;
@@ -62,7 +63,9 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
     /* the wall plane and the ghost planes beyond it */
     s->sides[k].acted = calloc((size_t)(s->g.pad + 1) * s->sides[k].next, 1);
     s->sides[k].hm = calloc((size_t)(s->g.pad + 2) * s->sides[k].next, sizeof(double));
-    if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm) return -1;
+    s->sides[k].dl = calloc(s->sides[k].next, sizeof(double));
+    if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm || !s->sides[k].dl)
+      return -1;
   }
   s->work.wpatch = malloc((4 * most + 1) * sizeof *s->work.wpatch);
   if (!s->work.wpatch) return -1;
@@ -76,6 +79,7 @@ void sim_free(sim *s) {
   for (k = 0; k < NSIDES; k++) {
     free(s->sides[k].ext);
     free(s->sides[k].acted);
+    free(s->sides[k].dl);
     free(s->sides[k].hm);
   }
   free(s->mats);
@@ -405,7 +409,7 @@ void sim_measure(sim *s) {
   s->e.kinetic = ke + g2p_affine_energy(s);
   s->e.strain = se;
   s->e.potential = pe;
-  s->e.wall_spring = wall_penalty_energy(s);
+  s->e.wall_spring = wall_penalty_energy(s) + wall_spring_energy(s);
   for (d = 0; d < 3; d++) s->e.angmom[d] = am[d];
   s->vmax = sqrt(v2max);
 }
@@ -659,6 +663,7 @@ int sim_step(sim *s) {
     if (sim_wall_hold(s)) {
       boundary_remap(s);
       if (cfg->wall_rule == WALL_PENALTY) wall_penalty_hold(s);
+      if (cfg->wall_rule == WALL_SPRING) wall_spring_hold(s);
     }
     book_finish(s); /* on the remapped motion (book.c) */
     if (s->heat) heat_finish(s); /* ... and its heat, before the move */

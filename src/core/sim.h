@@ -35,8 +35,9 @@ enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 /* ... WALL_COUPLE: the patch rule with sliding friction put at the wall
 ** line by a couple on the first node line inside (boundary.c);
 ** WALL_PENALTY: a spring on each particle that passes the wall line,
-** frictionless walls only (wall_penalty.c) */
-enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY };
+** frictionless walls only (wall_penalty.c); WALL_SPRING: a spring on each
+** column of nodes at the wall (wall_spring.c) */
+enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY, WALL_SPRING };
 /* how contact between two bodies acts: node by node (contact.c) or one
 ** velocity change per side over each contact patch (contact_patch.c) */
 enum body_rule { BODY_NODE, BODY_PATCH };
@@ -76,6 +77,7 @@ typedef struct side {
                      ** and the first plane inside, sum S m (distance of the
                      ** particle from the wall plane) (boundary.c) */
   double force[DIM]; /* force the wall put on the material, last step */
+  double *dl;        /* WALL_SPRING: per column, the spring's compression */
 } side;
 
 typedef struct body {
@@ -169,7 +171,9 @@ typedef struct sim_cfg {
   int wall_remap;    /* enum wall_remap: MUSL's remap at the walls */
   int wall_rule;     /* enum wall_rule: node by node or per contact patch */
   double wall_stiffness; /* WALL_PENALTY: the spring over the particle
-                     ** material's P-wave modulus per particle size */
+                     ** material's P-wave modulus per particle size;
+                     ** WALL_SPRING: the column's, per cell (wall_spring.c) */
+  int wall_band;     /* WALL_SPRING: node planes inside in a column */
   int body_rule;     /* enum body_rule: the same between bodies */
   int normals;       /* enum normals_kind: how contact normals are taken */
   int normal_window; /* ... from the shared nodes within this many cells */
@@ -298,6 +302,13 @@ typedef struct sim {
 static inline int sim_penalty_side(const sim *s, int k) {
   return s->cfg.wall_rule == WALL_PENALTY && s->sides[k].kind == SIDE_WALL &&
          !s->sides[k].mirror;
+}
+
+/* whether side k's wall acts by springs, on the particles ("penalty") or
+** on the columns of nodes ("spring"): frictionless walls only */
+static inline int sim_spring_side(const sim *s, int k) {
+  return (s->cfg.wall_rule == WALL_PENALTY || s->cfg.wall_rule == WALL_SPRING) &&
+         s->sides[k].kind == SIDE_WALL && !s->sides[k].mirror;
 }
 
 /* bytes of partial sums per chunk of particles (par.h) a phase may use */
@@ -436,6 +447,12 @@ void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void wall_penalty(sim *s);
 void wall_penalty_hold(sim *s); /* MUSL, walls held (sim_wall_hold) */
 double wall_penalty_energy(const sim *s);
+/* wall_spring.c: side k's spring at column j, on q (first..last its wall
+** and ghost planes); 0 where the column holds two fields (the node rule
+** acts there) */
+int wall_spring_column(sim *s, int k, int first, int last, size_t j);
+double wall_spring_energy(const sim *s);
+void wall_spring_hold(sim *s); /* MUSL, walls held (sim_wall_hold) */
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */
 /* boundary.c: at every node where a wall acted this step, the normal
 ** component of the node array a and of its slots' array sa set to the

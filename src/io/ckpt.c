@@ -272,6 +272,14 @@ static void visit_sim(ckv *v, sim *s) {
     vreal(v, nm, &sd->mu);
     vvec(v, pre, "v", sd->v, DIM);
     vvec(v, pre, "force", sd->force, DIM);
+    if (s->cfg.wall_rule == WALL_SPRING && sd->dl) { /* the springs' state */
+      size_t j;
+      for (j = 0; j < sd->next && !v->failed; j++) {
+        if (!v->apply && sd->dl[j] == 0) continue; /* absent reads as 0 */
+        snprintf(nm, sizeof nm, "%sdl.%zu", pre, j);
+        vreal_opt(v, nm, &sd->dl[j], 0);
+      }
+    }
   }
   for (k = 0; k < s->nbody && !v->failed; k++) {
     body *b = &s->bodies[k];

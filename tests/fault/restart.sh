@@ -104,4 +104,18 @@ mkdir cpiece && cp cfull/checkpoint_000003.h5 cfull/particles.xmf cpiece/ &&
 ok $? "restart mid-softening"
 cmp -s cfull/diagnostics.csv cpiece/diagnostics.csv
 ok $? "the diagnostics (the work of separation among them) are the same" "$(tail -1 cfull/diagnostics.csv | cut -c1-40)"
+
+# spring walls keep each column's compression between steps: continued
+# from t = 5.6, in the middle of the first impact (t = 5.0 .. 6.9), the
+# run is the uninterrupted one
+bounce=${pull%/*}/cylinder_bounce.lua
+"$bin" run "$bounce" --set wall_contact=spring --set t_end=7 --out sfull --checkpoint-every 2.8 --quiet
+ok $? "bounce on spring walls with checkpoints"
+strings sfull/checkpoint_000002.h5 | grep -q "side.right.dl."
+ok $? "the checkpoint in the impact holds the springs' compression"
+cp -r sfull spiece
+"$bin" run --restart spiece/checkpoint_000002.h5 --quiet >/dev/null 2>&1
+ok $? "restart in the impact"
+cmp -s sfull/diagnostics.csv spiece/diagnostics.csv
+ok $? "the diagnostics (the springs' energy among them) are the same" "$(tail -1 sfull/diagnostics.csv | cut -c1-40)"
 finish

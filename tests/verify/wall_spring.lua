@@ -96,29 +96,7 @@ for _, o in ipairs {{K = 10, G = 5}, {ppc = 3}, {speed = 0.05}, {cfl = 0.1}} do
 end
 
 V.case "momentum: the change is the walls' impulse"
-for _, cut in ipairs {0, 1e-9} do
-  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
-                         t_end = 4, wall_contact = "spring", mass_cutoff = cut}
-  local b = sim:body {shape = mvmpm.disk {center = {0.7, 0.4}, radius = 0.2},
-                      material = mvmpm.elastic {K = 10, G = 5, density = 1}, velocity = {0.4, -0.3}}
-  local m = b:mass()
-  local px0, py0 = b:diag().vx * m, b:diag().vy * m
-  local ix, iy, worst, tot = 0, 0, 0, 0
-  sim:every {steps = 1, fn = function(s)
-    for _, side in ipairs {"left", "right", "bottom", "top"} do
-      local wx, wy = s:wall_force(side)
-      ix, iy = ix + wx * s.dt, iy + wy * s.dt
-      tot = tot + (math.abs(wx) + math.abs(wy)) * s.dt
-    end
-    local d = b:diag()
-    worst = math.max(worst, math.abs(d.vx * m - px0 - ix), math.abs(d.vy * m - py0 - iy))
-  end}
-  sim:run()
-  V.above("sum of the walls' |impulses| / (m v0), mass_cutoff " .. cut, tot / (m * 0.5), 2)
-  local what = string.format("mass_cutoff %g: max |momentum change - impulse| / (m v0)", cut)
-  if cut == 0 then V.below(what, worst / (m * 0.5), 1e-9)
-  else V.info(what, worst / (m * 0.5)) end
-end
+dofile("tests/tools/walls.lua").momentum(mvmpm, V, "spring")
 
 V.case "a block set on the floor under gravity: carried, and not pumped"
 do

@@ -1,0 +1,37 @@
+-- tests/tools/walls.lua: checks the wall rules share, loaded by the
+-- verification files with dofile (run from the project's root).
+local W = {}
+
+-- A disc thrown around a box of walls (four impacts): the walls' forces
+-- are the only external ones, so the momentum's change is their impulse,
+-- sum of sim:wall_force dt, to round-off without a mass cutoff (with the
+-- default cutoff, the dropped nodes' share of the stresses' forces leaks:
+-- printed).  rule: sim.wall_contact.
+function W.momentum(mvmpm, V, rule)
+  for _, cut in ipairs {0, 1e-9} do
+    local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / 16, sides = "wall",
+                           t_end = 4, wall_contact = rule, mass_cutoff = cut}
+    local b = sim:body {shape = mvmpm.disk {center = {0.7, 0.4}, radius = 0.2},
+                        material = mvmpm.elastic {K = 10, G = 5, density = 1}, velocity = {0.4, -0.3}}
+    local m = b:mass()
+    local px0, py0 = b:diag().vx * m, b:diag().vy * m
+    local ix, iy, worst, tot = 0, 0, 0, 0
+    sim:every {steps = 1, fn = function(s)
+      for _, side in ipairs {"left", "right", "bottom", "top"} do
+        local wx, wy = s:wall_force(side)
+        ix, iy = ix + wx * s.dt, iy + wy * s.dt
+        tot = tot + (math.abs(wx) + math.abs(wy)) * s.dt
+      end
+      local d = b:diag()
+      worst = math.max(worst, math.abs(d.vx * m - px0 - ix), math.abs(d.vy * m - py0 - iy))
+    end}
+    sim:run()
+    -- four impacts, each about 2 m v: the impulses' total is no small number
+    V.above("sum of the walls' |impulses| / (m v0), mass_cutoff " .. cut, tot / (m * 0.5), 2)
+    local what = string.format("mass_cutoff %g: max |momentum change - impulse| / (m v0)", cut)
+    if cut == 0 then V.below(what, worst / (m * 0.5), 1e-9)
+    else V.info(what, worst / (m * 0.5)) end
+  end
+end
+
+return W

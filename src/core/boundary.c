@@ -154,12 +154,13 @@ static void wall_line(sim *s, int k, int line, int first) {
 /* the springs' side (wall_spring.c): the node rule where a column holds
 ** two fields */
 static void wall_springs(sim *s, int k, int first, int last) {
+  const double kk = wall_spring_k(s);
   size_t j;
   int line;
   for (j = 0; j < s->sides[k].next; j++) {
     for (line = first; line <= last; line++)
       s->sides[k].acted[(size_t)(line - first) * s->sides[k].next + j] = 0;
-    if (!wall_spring_column(s, k, first, last, j))
+    if (!wall_spring_column(s, k, first, last, j, kk))
       for (line = first; line <= last; line++) wall_column(s, k, line, first, j);
   }
 }

@@ -448,9 +448,10 @@ void wall_penalty(sim *s);
 void wall_penalty_hold(sim *s); /* MUSL, walls held (sim_wall_hold) */
 double wall_penalty_energy(const sim *s);
 /* wall_spring.c: side k's spring at column j, on q (first..last its wall
-** and ghost planes); 0 where the column holds two fields (the node rule
-** acts there) */
-int wall_spring_column(sim *s, int k, int first, int last, size_t j);
+** and ghost planes; kk: wall_spring_k); 0 where the column holds two
+** fields (the node rule acts there) */
+double wall_spring_k(const sim *s);
+int wall_spring_column(sim *s, int k, int first, int last, size_t j, double kk);
 double wall_spring_energy(const sim *s);
 void wall_spring_hold(sim *s); /* MUSL, walls held (sim_wall_hold) */
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */

@@ -47,8 +47,9 @@
 */
 #include "sim.h"
 
-/* the spring constant per column */
-static double column_k(const sim *s) {
+/* the spring constant per column (over the bodies: once per side and
+** step, not per column) */
+double wall_spring_k(const sim *s) {
   double best = 0, k;
   int32_t i;
   int d;
@@ -72,13 +73,13 @@ static void column_lines(const sim *s, int k, int first, int last, int *lo,
   else { *lo = first; *hi = last + nb; }
 }
 
-int wall_spring_column(sim *s, int k, int first, int last, size_t j) {
+int wall_spring_column(sim *s, int k, int first, int last, size_t j, double kk) {
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   side *sd = &s->sides[k];
   const int d = k / 2;
   const double sign = (k & 1) ? 1.0 : -1.0, dt = s->dt;
-  double M = 0, P0 = 0, PL = 0, kk, u0, uL, u1, c, *dl = &sd->dl[j];
+  double M = 0, P0 = 0, PL = 0, u0, uL, u1, c, *dl = &sd->dl[j];
   int lo, hi, line;
   column_lines(s, k, first, last, &lo, &hi);
   for (line = lo; line <= hi; line++) {
@@ -98,7 +99,6 @@ int wall_spring_column(sim *s, int k, int first, int last, size_t j) {
     *dl = 0;
     return 1;
   }
-  kk = column_k(s);
   c = kk * dt * (*dl + 0.25 * dt * (u0 + uL)) / (1 + 0.25 * kk * dt * dt / M);
   if (!(c > 0)) c = 0;
   u1 = uL - c / M;
@@ -152,7 +152,7 @@ double wall_spring_energy(const sim *s) {
   size_t j;
   int k;
   if (s->cfg.wall_rule != WALL_SPRING || s->nmat == 0) return 0;
-  kk = column_k(s);
+  kk = wall_spring_k(s);
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
     if (sd->kind != SIDE_WALL || sd->mirror) continue;

@@ -283,6 +283,18 @@ const char *sim_advice(const sim *s) {
 ** the disc back, and it slides where it would roll. */
 const char *sim_wall_advice(const sim *s) {
   int k;
+  /* measured (tests/verify/wall_spring.lua): the frictionless bounce's
+  ** flight-mean spin after impacts 1 and 2 at 8, 16, 32 cells, node rule
+  ** 0.001 / -0.002, 0.0006 / 0.0003, 0.0001 / 0.0003; spring walls -0.014
+  ** / 0.031, -0.050 / -0.096, -0.032 / -0.046.  Each column keeps its
+  ** compression where the material slid on (wall_spring.c) */
+  if (s->cfg.wall_rule == WALL_SPRING)
+    return "spring walls (wall_contact = \"spring\") keep the energy of "
+           "impacts but turn a body that slides along them: the frictionless "
+           "bounce's disc spins at -0.05 and -0.10 rad per time unit after "
+           "impacts 1 and 2 at 16 cells per diameter, as friction 0.1 would "
+           "(the node rule: 0.0006); for bodies that slide or roll on walls "
+           "use \"node\" or \"patch\" (docs/verification.md, spring walls)";
   if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, couple, penalty */
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];

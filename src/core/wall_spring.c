@@ -65,12 +65,17 @@ double wall_spring_k(const sim *s) {
 }
 
 /* the node planes of side k's columns: the wall and ghost planes
-** [first, last] and wall_band planes inside */
+** [first, last] and wall_band planes inside, no further than the grid
+** (a domain fewer cells across than the band: the whole grid) */
 static void column_lines(const sim *s, int k, int first, int last, int *lo,
                          int *hi) {
   int nb = s->cfg.wall_band;
-  if (k & 1) { *lo = first - nb; *hi = last; }
-  else { *lo = first; *hi = last + nb; }
+  if (k & 1) { *lo = first - nb < 0 ? 0 : first - nb; *hi = last; }
+  else {
+    int top = s->g.n[k / 2] - 1;
+    *lo = first;
+    *hi = last + nb > top ? top : last + nb;
+  }
 }
 
 int wall_spring_column(sim *s, int k, int first, int last, size_t j, double kk) {

@@ -18,9 +18,9 @@
 ** So the spring acts on a column of nodes: the wall plane, the ghost
 ** planes beyond it and wall_band node planes inside, at one wall column
 ** (a node of the wall plane).  It gives every node of the column the same
-** normal velocity change: a particle whose stencil lies in the column
-** gets that change whole, and the loss above is left only where a
-** stencil reaches two columns.  The column's compression delta follows
+** normal velocity change: a particle whose stencil lies in columns that
+** move alike gets that change whole, and the loss above is left only by
+** the differences between neighbouring columns.  The column's compression delta follows
 ** its mass-weighted normal velocity U into the wall (reach.c's separation
 ** check starts it once the material reaches the wall line), and the
 ** normal impulse c is the spring's force at the middle of the step
@@ -44,6 +44,16 @@
 ** A column holding two velocity fields (a shared node in it) is left to
 ** the node rule (boundary.c): its compression is per column, not per
 ** field.  Serial over the columns: the same bits on any thread count.
+**
+** The defect (warned of at load, sim_wall_advice): the compression is
+** kept per column, a place on the wall, while the material it belongs to
+** slides along it.  A column stays compressed after the material has
+** moved on, the pressure leans back against the slide, and a body
+** sliding along the wall is turned (the frictionless bounce's disc at 16
+** cells: -0.05 and -0.10 rad per time unit after impacts 1 and 2; the
+** node rule 0.0006).  Carried along with the column's tangential velocity
+** by an upwind step, it was worse (0.06 / 0.16): the contact is a few
+** columns wide.
 */
 #include "sim.h"
 

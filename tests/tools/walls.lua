@@ -34,4 +34,29 @@ function W.momentum(mvmpm, V, rule)
   end
 end
 
+-- What a rule of springs at the walls refuses, each naming what is
+-- wrong: friction (naming the side), a smoothing transfer, a FLIP
+-- fraction below 1 at construction and later, a stiffness out of range.
+-- Returns refused(o, pat) for the rule's own checks.
+function W.refusals(mvmpm, V, rule)
+  local function refused(o, pat)
+    local p = {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = rule}
+    for k, v in pairs(o) do p[k] = v end
+    local ok, msg = pcall(mvmpm.sim, p)
+    return not ok and msg:find(pat, 1, true) ~= nil, msg
+  end
+  V.holds(string.format("a %s wall with friction is refused, naming the side", rule),
+          (refused({sides = {"wall", friction = 0.2}}, "side 'left' has friction 0.2")))
+  V.holds(string.format("a smoothing transfer (APIC) with %s walls is refused", rule),
+          (refused({shape = "bspline2", transfer = "apic"}, "needs pure FLIP")))
+  V.holds(string.format("a FLIP fraction below 1 with %s walls is refused", rule),
+          (refused({flip = 0.99}, "needs pure FLIP")))
+  local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = rule, sides = "wall"}
+  local ok, msg = pcall(function() s.flip = 0.99 end)
+  V.holds("setting sim.flip below 1 later is refused too", not ok and msg:find("'flip' must be 1", 1, true) ~= nil)
+  V.holds("wall_stiffness out of range is refused, naming the range",
+          (refused({wall_stiffness = 20}, "'wall_stiffness' must be in [0.01, 16]")))
+  return refused
+end
+
 return W

@@ -153,25 +153,7 @@ do
   V.holds("1 and 2 threads: the same energy, spring energy and momentum, bit for bit",
           a1 == a2 and b1 == b2 and c1 == c2)
 end
-local function refused(o, pat)
-  local p = {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "penalty"}
-  for k, v in pairs(o) do p[k] = v end
-  local ok, msg = pcall(mvmpm.sim, p)
-  return not ok and msg:find(pat, 1, true) ~= nil, msg
-end
-V.holds("a penalty wall with friction is refused, naming the side",
-        (refused({sides = {"wall", friction = 0.2}}, "side 'left' has friction 0.2")))
-V.holds("a smoothing transfer (APIC) with penalty walls is refused",
-        (refused({shape = "bspline2", transfer = "apic"}, "needs pure FLIP")))
-V.holds("a FLIP fraction below 1 with penalty walls is refused",
-        (refused({flip = 0.99}, "needs pure FLIP")))
-do
-  local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "penalty", sides = "wall"}
-  local ok, msg = pcall(function() s.flip = 0.99 end)
-  V.holds("setting sim.flip below 1 later is refused too", not ok and msg:find("'flip' must be 1", 1, true) ~= nil)
-end
-V.holds("wall_stiffness out of range is refused, naming the range",
-        (refused({wall_stiffness = 0}, "'wall_stiffness' must be in [0.01, 16]")))
+dofile("tests/tools/walls.lua").refusals(mvmpm, V, "penalty")
 do
   local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "penalty", sides = "wall"}
   local ok, msg = pcall(s.wall_nodes, s, "bottom")

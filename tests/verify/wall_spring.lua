@@ -212,27 +212,12 @@ do
   local e = sim:energy().total
   V.holds("a domain one cell across with wall_band = 4 runs (energy finite)", e == e and e < 2 * e0, e)
 end
-local function refused(o, pat)
-  local p = {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "spring"}
-  for k, v in pairs(o) do p[k] = v end
-  local ok, msg = pcall(mvmpm.sim, p)
-  return not ok and msg:find(pat, 1, true) ~= nil, msg
-end
-V.holds("a spring wall with friction is refused, naming the side",
-        (refused({sides = {"wall", friction = 0.2}}, "side 'left' has friction 0.2")))
-V.holds("a smoothing transfer (APIC) with spring walls is refused",
-        (refused({shape = "bspline2", transfer = "apic"}, "needs pure FLIP")))
-V.holds("a FLIP fraction below 1 with spring walls is refused",
-        (refused({flip = 0.99}, "needs pure FLIP")))
+local refused = dofile("tests/tools/walls.lua").refusals(mvmpm, V, "spring")
 do
   local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "spring", sides = "wall"}
-  local ok, msg = pcall(function() s.flip = 0.99 end)
-  V.holds("setting sim.flip below 1 later is refused too", not ok and msg:find("'flip' must be 1", 1, true) ~= nil)
-  ok, msg = pcall(s.wall_nodes, s, "bottom")
+  local ok, msg = pcall(s.wall_nodes, s, "bottom")
   V.holds("sim:wall_nodes is refused, pointing to sim:wall_force",
           not ok and msg:find("wall_force", 1, true) ~= nil)
 end
 V.holds("wall_band out of range is refused, naming the range",
         (refused({wall_band = 5}, "'wall_band' must be in [0, 4]")))
-V.holds("wall_stiffness out of range is refused, naming the range",
-        (refused({wall_stiffness = 20}, "'wall_stiffness' must be in [0.01, 16]")))

@@ -165,13 +165,6 @@ static void wall_springs(sim *s, int k, int first, int last) {
   }
 }
 
-/* the node planes side k acts on: its wall plane and the ghost planes
-** beyond it, [*first, *last] along the side's normal */
-static void wall_lines(const grid *g, int k, int *first, int *last) {
-  int d = k / 2;
-  if (k & 1) { *first = g->pad + g->cells[d]; *last = g->n[d] - 1; }
-  else { *first = 0; *last = g->pad; }
-}
 
 /* whether the wall acted on plane `line` (counted from the first) at
 ** column j */
@@ -285,7 +278,7 @@ static void patch_heights(sim *s) {
     use[k] = sd->kind == SIDE_WALL && sd->mu > 0;
     if (!use[k]) continue;
     any = 1;
-    wall_lines(g, k, &first[k], &last[k]);
+    grid_wall_lines(g, k, &first[k], &last[k]);
     inner[k] = inner_line(k, first[k], last[k]);
     xw[k] = (k & 1) ? g->hi[k / 2] : g->lo[k / 2];
     memset(sd->hm, 0, (size_t)(g->pad + 2) * sd->next * sizeof(double));
@@ -611,7 +604,7 @@ void boundary_apply(sim *s) {
     int line, first, last;
     if (s->sides[k].kind != SIDE_WALL) continue;
     if (sim_penalty_side(s, k)) continue;
-    wall_lines(g, k, &first, &last);
+    grid_wall_lines(g, k, &first, &last);
     if (cfg->wall_rule == WALL_SPRING && !s->sides[k].mirror) {
       wall_springs(s, k, first, last);
       continue;
@@ -681,7 +674,7 @@ static void patch_normal_side(sim *s, int k, double *const a[DIM],
   const side *sd = &s->sides[k];
   const int32_t *cols = wk->wpatch + 2 * sd->next, *off = cols + sd->next;
   int first, last, np, p;
-  wall_lines(&s->g, k, &first, &last);
+  grid_wall_lines(&s->g, k, &first, &last);
   np = patch_find(s, k, first, last, col_acted);
   for (p = 0; p < np; p++) {
     const int32_t *c = cols + off[p];
@@ -710,7 +703,7 @@ void boundary_normal_set(sim *s, double *const a[DIM],
       patch_normal_side(s, k, a, sa, v);
       continue;
     }
-    wall_lines(g, k, &first, &last);
+    grid_wall_lines(g, k, &first, &last);
     for (line = first; line <= last; line++)
       for (j = 0; j < sd->next; j++) {
         int32_t n = grid_face_node(g, d, line, j), sl;

@@ -172,6 +172,13 @@ static inline size_t grid_face_index(const grid *g, int d, const int i[DIM]) {
     if (e != d) j = j * (size_t)g->n[e] + (size_t)i[e];
   return j;
 }
+/* the node planes side k (2 d low, 2 d + 1 high) of the domain acts on:
+** its wall plane and the ghost planes beyond it, [*first, *last] along d */
+static inline void grid_wall_lines(const grid *g, int k, int *first, int *last) {
+  int d = k / 2;
+  if (k & 1) { *first = g->pad + g->cells[d]; *last = g->n[d] - 1; }
+  else { *first = 0; *last = g->pad; }
+}
 /* physical coordinate of stored node index i along d */
 static inline double grid_x(const grid *g, int d, int i) {
   return g->lo[d] + (i - (g->periodic[d] ? 0 : g->pad)) * g->h;

@@ -149,8 +149,7 @@ void wall_spring_hold(sim *s) {
     int d = k / 2, first, last, lo, hi;
     size_t j;
     if (!sim_spring_side(s, k)) continue;
-    first = (k & 1) ? g->pad + g->cells[d] : 0;
-    last = (k & 1) ? g->n[d] - 1 : g->pad;
+    grid_wall_lines(g, k, &first, &last);
     column_lines(s, k, first, last, &lo, &hi);
     for (j = 0; j < sd->next; j++) {
       if (!(sd->dl[j] > 0)) continue;

@@ -24,20 +24,8 @@
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
-local function bounce(cells, o)
-  local p = {cells = cells, t_end = 36, wall_contact = "penalty"}
-  for k, v in pairs(o or {}) do p[k] = v end
-  local sim = mvmpm.load("scenarios/cylinder_bounce.lua", p)
-  local disc = sim:bodies()[1]
-  local e0 = sim:energy().total
-  sim:run(10)
-  local r = {first = sim:energy().total / e0 - 1, rest = -disc:diag().vx / 0.1}
-  sim:run(36)
-  local e = sim:energy()
-  r.three, r.held, r.residual = e.total / e0 - 1, e.wall_held, e.residual / e0
-  r.sim = sim
-  return r
-end
+local W = dofile("tests/tools/walls.lua")
+local function bounce(cells, o) return W.bounce(mvmpm, cells, "penalty", o) end
 
 V.case "frictionless bounce, penalty walls, default shape: 8, 16, 32 cells"
 local lim = {[8] = 0.02, [16] = 0.01, [32] = 0.005}
@@ -85,7 +73,7 @@ do
 end
 
 V.case "momentum: the change is the walls' impulse"
-dofile("tests/tools/walls.lua").momentum(mvmpm, V, "penalty")
+W.momentum(mvmpm, V, "penalty")
 
 V.case "a block set on the floor under gravity: carried, and not pumped"
 local function block(remap)
@@ -153,7 +141,7 @@ do
   V.holds("1 and 2 threads: the same energy, spring energy and momentum, bit for bit",
           a1 == a2 and b1 == b2 and c1 == c2)
 end
-dofile("tests/tools/walls.lua").refusals(mvmpm, V, "penalty")
+W.refusals(mvmpm, V, "penalty")
 do
   local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "penalty", sides = "wall"}
   local ok, msg = pcall(s.wall_nodes, s, "bottom")

@@ -29,22 +29,8 @@
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
-local function bounce(cells, o)
-  local p = {cells = cells, t_end = 36, wall_contact = "spring"}
-  for k, v in pairs(o or {}) do p[k] = v end
-  local speed = p.speed or 0.1
-  local sim = mvmpm.load("scenarios/cylinder_bounce.lua", p)
-  local disc = sim:bodies()[1]
-  local e0 = sim:energy().total
-  local scale = 0.1 / speed
-  sim:run(10 * scale)
-  local r = {first = sim:energy().total / e0 - 1, rest = -disc:diag().vx / speed}
-  sim:run(36 * scale)
-  local e = sim:energy()
-  r.three, r.held, r.residual = e.total / e0 - 1, e.wall_held, e.residual / e0
-  r.sim = sim
-  return r
-end
+local W = dofile("tests/tools/walls.lua")
+local function bounce(cells, o) return W.bounce(mvmpm, cells, "spring", o) end
 
 V.case "frictionless bounce, spring walls, default shape: 8, 16, 32 cells"
 local lim = {[8] = 0.02, [16] = 0.01, [32] = 0.005}
@@ -126,7 +112,7 @@ for _, o in ipairs {{K = 10, G = 5}, {ppc = 3}, {speed = 0.05}, {cfl = 0.1}} do
 end
 
 V.case "momentum: the change is the walls' impulse"
-dofile("tests/tools/walls.lua").momentum(mvmpm, V, "spring")
+W.momentum(mvmpm, V, "spring")
 
 V.case "a block set on the floor under gravity: carried, and not pumped"
 do
@@ -212,7 +198,7 @@ do
   local e = sim:energy().total
   V.holds("a domain one cell across with wall_band = 4 runs (energy finite)", e == e and e < 2 * e0, e)
 end
-local refused = dofile("tests/tools/walls.lua").refusals(mvmpm, V, "spring")
+local refused = W.refusals(mvmpm, V, "spring")
 do
   local s = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, wall_contact = "spring", sides = "wall"}
   local ok, msg = pcall(s.wall_nodes, s, "bottom")

@@ -114,12 +114,48 @@ static void maketicks(ticks *T, double lo, double hi, int log, int n, int s) {
   }
 }
 
+/* A title wider than the image goes on two lines, split at the space
+** nearest its middle, and is drawn smaller (down to scale 1) only if the
+** longer line is still too wide (a study's titles name the case and the
+** measure, and ran off both edges of the image).  Returns the number of
+** lines; *ts the scale, first[] the first line when there are two
+** (*second the rest). */
+static int title_fit(const char *t, int width, int m, int sc, int *ts,
+                     char *first, size_t cap, const char **second) {
+  size_t n = strlen(t), i, best = 0;
+  int room = width - 2 * m, w;
+  *ts = sc;
+  if (canvas_textw(t, sc) <= room || n >= cap) {
+    while (*ts > 1 && canvas_textw(t, *ts) > room) (*ts)--;
+    return 1;
+  }
+  for (i = 1; i < n; i++)
+    if (t[i] == ' ' && (best == 0 || (i > n / 2 ? i - n / 2 : n / 2 - i) <
+                                      (best > n / 2 ? best - n / 2 : n / 2 - best)))
+      best = i;
+  if (best == 0) {
+    while (*ts > 1 && canvas_textw(t, *ts) > room) (*ts)--;
+    return 1;
+  }
+  memcpy(first, t, best);
+  first[best] = 0;
+  *second = t + best + 1;
+  for (;;) {
+    w = canvas_textw(first, *ts);
+    if (canvas_textw(*second, *ts) > w) w = canvas_textw(*second, *ts);
+    if (w <= room || *ts == 1) return 2;
+    (*ts)--;
+  }
+}
+
 int plot_draw(canvas *c, plot_layout *lay, const plot_series *s, int ns,
               const plot_opts *o, char *err, size_t errlen) {
   plot_layout L;
   ticks X, Y;
   int sc, m, lh, top, left, bottom, right, k, nlab = 0, legw = 0, legh;
-  int tl, best = 0, bestn = -1, corner;
+  int tl, best = 0, bestn = -1, corner, tlines = 0, ts = 1;
+  char tfirst[256];
+  const char *tsecond = NULL;
   size_t i;
   memset(c, 0, sizeof *c);
   memset(&L, 0, sizeof L);
@@ -154,7 +190,9 @@ int plot_draw(canvas *c, plot_layout *lay, const plot_series *s, int ns,
   maketicks(&X, L.xlo, L.xhi, o->xlog, 7, sc);
   maketicks(&Y, L.ylo, L.yhi, o->ylog, 6, sc);
 
-  top = m + (o->title && o->title[0] ? lh + 6 * sc : 0) + CANVAS_CAP(sc) / 2;
+  if (o->title && o->title[0])
+    tlines = title_fit(o->title, o->width, m, sc, &ts, tfirst, sizeof tfirst, &tsecond);
+  top = m + (tlines ? tlines * CANVAS_LINE(ts) + 6 * sc : 0) + CANVAS_CAP(sc) / 2;
   left = m + (o->ylabel && o->ylabel[0] ? lh + 4 * sc : 0) + Y.maxw + 3 * sc + tl;
   bottom = m + tl + 3 * sc + lh + (o->xlabel && o->xlabel[0] ? lh + 2 * sc : 0);
   right = m + X.maxw / 2;
@@ -225,8 +263,15 @@ int plot_draw(canvas *c, plot_layout *lay, const plot_series *s, int ns,
     int y = L.py1 - (int)floor(frac(Y.minor[k], L.ylo, L.yhi, 1) * (L.py1 - L.py0) + 0.5);
     canvas_rect(c, L.px0 - sc - tl / 2, y - sc / 2, L.px0 - sc, y - sc / 2 + sc, INK);
   }
-  if (o->title && o->title[0])
-    canvas_text(c, (L.px0 + L.px1) / 2, m, o->title, sc, INK, CV_CENTER, CV_TOP, 0);
+  if (tlines) {
+    const char *l1 = tlines == 2 ? tfirst : o->title;
+    int w = canvas_textw(l1, ts), cx = (L.px0 + L.px1) / 2;
+    if (tlines == 2 && canvas_textw(tsecond, ts) > w) w = canvas_textw(tsecond, ts);
+    if (cx - w / 2 < m || cx + w / 2 > o->width - m) cx = o->width / 2;
+    canvas_text(c, cx, m, l1, ts, INK, CV_CENTER, CV_TOP, 0);
+    if (tlines == 2)
+      canvas_text(c, cx, m + CANVAS_LINE(ts), tsecond, ts, INK, CV_CENTER, CV_TOP, 0);
+  }
   if (o->xlabel && o->xlabel[0])
     canvas_text(c, (L.px0 + L.px1) / 2, L.py1 + sc + tl + 3 * sc + lh + 2 * sc,
                 o->xlabel, sc, INK, CV_CENTER, CV_TOP, 0);

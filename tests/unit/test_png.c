@@ -523,6 +523,30 @@ static void test_plot(void) {
   UNIT_CHECK(plot_draw(&c, &L, s + 2, 1, &o, err, sizeof err) == 0 && L.xlo < 7 && L.xhi > 7 &&
              L.ylo < -2 && L.yhi > -2, "a single point gets a range around it");
   canvas_free(&c);
+  /* a title wider than the image goes on two lines inside it, and its
+  ** band has ink (a study's titles ran off both edges) */
+  {
+    int top1, x, y, edge = 0, ink = 0;
+    uint32_t bg;
+    UNIT_CHECK(plot_draw(&c, &L, s, 3, &o, err, sizeof err) == 0, "short title");
+    top1 = L.py0;
+    canvas_free(&c);
+    o.title = "a title that names the case, the measure and the scheme, longer "
+              "than the four hundred pixels of this image";
+    UNIT_CHECK(plot_draw(&c, &L, s, 3, &o, err, sizeof err) == 0, "long title: %s", err);
+    bg = canvas_get(&c, 0, 0);
+    for (y = 0; y < L.py0 - 2; y++)
+      for (x = 0; x < c.w; x++) {
+        uint32_t v = canvas_get(&c, x, y);
+        if (v != bg && (x < 4 || x >= c.w - 4)) edge++;
+        if (v != bg) ink++;
+      }
+    UNIT_CHECK(L.py0 > top1 && edge == 0 && ink > 0,
+               "long title: two lines (plot top %d against %d), %d pixels at the "
+               "image's edges, %d inked", L.py0, top1, edge, ink);
+    canvas_free(&c);
+    o.title = "t";
+  }
   /* log axes skip x <= 0, and the file decodes */
   s[0].x = xl; s[0].y = yl; s[0].n = 3;
   o.xlog = o.ylog = 1;

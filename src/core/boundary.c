@@ -165,7 +165,6 @@ static void wall_springs(sim *s, int k, int first, int last) {
   }
 }
 
-
 /* whether the wall acted on plane `line` (counted from the first) at
 ** column j */
 static int sd_acted(const sim *s, int k, int line, size_t j) {

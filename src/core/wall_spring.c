@@ -20,8 +20,9 @@
 ** (a node of the wall plane).  It gives every node of the column the same
 ** normal velocity change: a particle whose stencil lies in columns that
 ** move alike gets that change whole, and the loss above is left only by
-** the differences between neighbouring columns.  The column's compression delta follows
-** its mass-weighted normal velocity U into the wall (reach.c's separation
+** the differences between neighbouring columns.  The column's
+** compression delta follows its mass-weighted normal velocity U into the
+** wall (reach.c's separation
 ** check starts it once the material reaches the wall line), and the
 ** normal impulse c is the spring's force at the middle of the step
 ** (implicit midpoint, per column of mass M):
@@ -53,7 +54,8 @@
 ** cells: -0.05 and -0.10 rad per time unit after impacts 1 and 2; the
 ** node rule 0.0006).  Carried along with the column's tangential velocity
 ** by an upwind step, it was worse (0.06 / 0.16): the contact is a few
-** columns wide.
+** columns wide; carried by the particles, three ways, it was smaller but
+** grew with refinement or lost energy (docs/algorithm.md section 8c).
 */
 #include "sim.h"
 

@@ -312,7 +312,7 @@ FORCE:
 # build dependency) opens a run's XDMF series with each of its three
 # XDMF readers, and each must see every particle and every array of
 # every snapshot, bit for bit: a 2-D series (the cylinder's bounce, 208
-# particles) and a 3-D one (a ball of 2,176 particles, five snapshots),
+# particles) and a 3-D one (a ball of 2,148 particles, five snapshots),
 # each with the arrays of its dimension named (check_xdmf.py --dim)
 PV_READERS = XDMFReader Xdmf3ReaderS Xdmf3ReaderT
 deps-paraview:

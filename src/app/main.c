@@ -84,7 +84,8 @@ static const cmdhelp helps[] = {
 "render SNAPSHOT.h5|CHECKPOINT.h5 [--by KEY] [--out FILE.png|.svg]\n"
 "                [--width N] [--range LO,HI|robust|full] [--log] [--no-axes]\n"
 "                [--colormap auto|seq|div] [--title TEXT] [--matrix BODY]\n"
-"                [--domain X0,X1,Y0,Y1]\n",
+"                [--domain X0,X1,Y0,Y1]\n"
+"                3-D: [--axis x|y|z] [--at POS] [--thick T] [--project]\n",
 "render draws a snapshot's or a checkpoint's particles as a PNG or SVG,\n"
 "       coloured by KEY: body, pressure, sdiff (principal stress\n"
 "       difference), speed, or a field such as velocity.x, stress.xy, mass\n"
@@ -97,7 +98,13 @@ static const cmdhelp helps[] = {
 "       file records, else the particles')\n"
 "--no-axes  no ticks, tick labels or axis titles\n"
 "--matrix  the body drawn grey among grains (default: one named binder or\n"
-"       matrix, else a body holding most of the particles)\n"},
+"       matrix, else a body holding most of the particles)\n"
+"--axis  3-D: the axis the picture looks along (default z; 2-D: only z)\n"
+"--at  3-D: where along --axis the slice lies (default: the middle of the\n"
+"       stored domain)\n"
+"--thick  3-D: a slab of that thickness, the particles whose centres lie\n"
+"       in it (default: those whose own cube crosses the plane)\n"
+"--project  3-D: every particle, projected along --axis, instead of a slice\n"},
 };
 #define NCMD (int)(sizeof helps / sizeof helps[0])
 
@@ -671,6 +678,12 @@ static int cmd_run(int argc, char **argv) {
            sim_residual(s),
            100 * sim_residual(s) / (sim_scale(s) > 0 ? sim_scale(s) : 1),
            sim_scale(s));
+    /* the rest of the total the residual takes (sim_total): without it
+    ** the line above does not add up under gravity or spring walls */
+    if (s->e.potential != 0 || s->e.wall_spring != 0)
+      printf("        potential %.6g (initial %.6g)  wall springs %.6g  "
+             "step lag %.3g\n", s->e.potential, s->e.potential0,
+             s->e.wall_spring, s->e.lag);
     if (s->e.transfer != 0 || s->e.impact != 0 || s->e.bonding != 0)
       printf("        numerical: transfer %.6g  impact %.6g  bonding %.6g\n",
              s->e.transfer, s->e.impact, s->e.bonding);

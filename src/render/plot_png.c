@@ -84,6 +84,38 @@ static void extent(const plot_series *s, int ns, const plot_opts *o, int ax,
   axis_pad(lo, hi, ax ? o->ylog : o->xlog);
 }
 
+/* what a legend box (x0, y0, bw, bh, in pixels) hides: the points of the
+** series' lines sampled every two pixels along each segment, and the
+** markers (radius r) that reach into it */
+static long hidden(const plot_layout *L, const plot_opts *o,
+                   const plot_series *s, int ns, int x0, int y0, int bw,
+                   int bh, double r) {
+  long n = 0;
+  int k;
+  size_t i;
+  for (k = 0; k < ns; k++) {
+    double qx = NAN, qy = NAN, px, py;
+    for (i = 0; i < s[k].n; i++) {
+      plot_map(L, o, s[k].x[i], s[k].y[i], &px, &py);
+      if (isnan(px)) { qx = NAN; continue; }
+      if (s[k].style != PLOT_LINE &&
+          px + r >= x0 && px - r < x0 + bw && py + r >= y0 && py - r < y0 + bh)
+        n++;
+      if (s[k].style != PLOT_POINTS && !isnan(qx)) {
+        double d = fmax(fabs(px - qx), fabs(py - qy));
+        int j, m = d > 2 ? (int)fmin(ceil(d / 2), 4096) : 1;
+        for (j = 1; j <= m; j++) {
+          double u = (double)j / m, x = qx + u * (px - qx), y = qy + u * (py - qy);
+          if (x >= x0 && x < x0 + bw && y >= y0 && y < y0 + bh) n++;
+        }
+      }
+      qx = px;
+      qy = py;
+    }
+  }
+  return n;
+}
+
 typedef struct ticks {
   double t[AXIS_MAXTICKS], minor[4 * AXIS_MAXTICKS], step;
   int n, nminor, maxw;
@@ -152,8 +184,9 @@ int plot_draw(canvas *c, plot_layout *lay, const plot_series *s, int ns,
               const plot_opts *o, char *err, size_t errlen) {
   plot_layout L;
   ticks X, Y;
-  int sc, m, lh, top, left, bottom, right, k, nlab = 0, legw = 0, legh;
-  int tl, best = 0, bestn = -1, corner, tlines = 0, ts = 1;
+  int sc, m, lh, top, left, bottom, right, k, nlab = 0, legw = 0, bw, bh;
+  int tl, best = 0, corner, tlines = 0, ts = 1, pass;
+  long bestn = -1;
   char tfirst[256];
   const char *tsecond = NULL;
   size_t i;
@@ -193,20 +226,53 @@ int plot_draw(canvas *c, plot_layout *lay, const plot_series *s, int ns,
   if (o->title && o->title[0])
     tlines = title_fit(o->title, o->width, m, sc, &ts, tfirst, sizeof tfirst, &tsecond);
   top = m + (tlines ? tlines * CANVAS_LINE(ts) + 6 * sc : 0) + CANVAS_CAP(sc) / 2;
-  left = m + (o->ylabel && o->ylabel[0] ? lh + 4 * sc : 0) + Y.maxw + 3 * sc + tl;
   bottom = m + tl + 3 * sc + lh + (o->xlabel && o->xlabel[0] ? lh + 2 * sc : 0);
   right = m + X.maxw / 2;
   L.scale = sc;
   L.w = o->width;
   L.h = o->height;
-  L.px0 = left;
   L.px1 = o->width - right;
   L.py0 = top;
   L.py1 = o->height - bottom;
-  if (L.px1 - L.px0 < 40 || L.py1 - L.py0 < 40) {
-    snprintf(err, errlen, "size %d x %d leaves no room for the plot inside "
-             "its labels; make it larger", o->width, o->height);
-    return -1;
+  for (k = 0; k < ns; k++)
+    if (s[k].label && s[k].label[0]) {
+      int w = canvas_textw(s[k].label, sc);
+      if (w > legw) legw = w;
+      nlab++;
+    }
+  bw = legw + 30 * sc;
+  bh = nlab * lh + 6 * sc;
+  /* the legend goes in the corner that hides the least of the series;
+  ** where every corner hides some, the y axis is raised (unless its range
+  ** is given) so that the series pass below the legend's height, and the
+  ** corners are tried again */
+  for (pass = 0; pass < 2; pass++) {
+    left = m + (o->ylabel && o->ylabel[0] ? lh + 4 * sc : 0) + Y.maxw + 3 * sc + tl;
+    L.px0 = left;
+    if (L.px1 - L.px0 < 40 || L.py1 - L.py0 < 40) {
+      snprintf(err, errlen, "size %d x %d leaves no room for the plot inside "
+               "its labels; make it larger", o->width, o->height);
+      return -1;
+    }
+    if (!nlab) break;
+    bestn = -1;
+    for (corner = 0; corner < 4; corner++) {
+      int x0 = corner == 1 || corner == 3 ? L.px0 + 6 * sc : L.px1 - 6 * sc - bw;
+      int y0 = corner < 2 ? L.py0 + 6 * sc : L.py1 - 6 * sc - bh;
+      long n = hidden(&L, o, s, ns, x0, y0, bw, bh, 3.0 * sc);
+      if (bestn < 0 || n < bestn) { bestn = n; best = corner; }
+    }
+    if (pass || bestn == 0 || o->has_yrange) break;
+    {
+      /* the part of the plot's height the legend and its margins take */
+      double f = (double)(bh + 12 * sc) / (L.py1 - L.py0);
+      if (!(f < 0.6)) break; /* no room to make: keep the best corner */
+      if (o->ylog)
+        L.yhi = pow(10, log10(L.ylo) + (log10(L.yhi) - log10(L.ylo)) / (1 - f));
+      else
+        L.yhi = L.ylo + (L.yhi - L.ylo) / (1 - f);
+      maketicks(&Y, L.ylo, L.yhi, o->ylog, 6, sc);
+    }
   }
   if (canvas_init(c, L.w, L.h, BG)) {
     snprintf(err, errlen, "out of memory for a %d x %d image", L.w, L.h);
@@ -279,29 +345,9 @@ int plot_draw(canvas *c, plot_layout *lay, const plot_series *s, int ns,
     canvas_text(c, m, (L.py0 + L.py1) / 2, o->ylabel, sc, INK, CV_CENTER,
                 CV_TOP, 1);
 
-  /* the legend, in the corner that hides the fewest points */
-  for (k = 0; k < ns; k++)
-    if (s[k].label && s[k].label[0]) {
-      int w = canvas_textw(s[k].label, sc);
-      if (w > legw) legw = w;
-      nlab++;
-    }
+  /* the legend, in the corner chosen above */
   if (nlab) {
-    int bw = legw + 30 * sc, bh, x0, y0, y;
-    legh = nlab * lh + 6 * sc;
-    bh = legh;
-    for (corner = 0; corner < 4; corner++) {
-      int n = 0;
-      x0 = corner == 1 || corner == 3 ? L.px0 + 6 * sc : L.px1 - 6 * sc - bw;
-      y0 = corner < 2 ? L.py0 + 6 * sc : L.py1 - 6 * sc - bh;
-      for (k = 0; k < ns; k++)
-        for (i = 0; i < s[k].n; i++) {
-          double px, py;
-          plot_map(&L, o, s[k].x[i], s[k].y[i], &px, &py);
-          if (px >= x0 && px < x0 + bw && py >= y0 && py < y0 + bh) n++;
-        }
-      if (bestn < 0 || n < bestn) { bestn = n; best = corner; }
-    }
+    int x0, y0, y;
     x0 = best == 1 || best == 3 ? L.px0 + 6 * sc : L.px1 - 6 * sc - bw;
     y0 = best < 2 ? L.py0 + 6 * sc : L.py1 - 6 * sc - bh;
     canvas_rect(c, x0, y0, x0 + bw, y0 + bh, BG);

@@ -547,6 +547,46 @@ static void test_plot(void) {
     canvas_free(&c);
     o.title = "t";
   }
+  /* a legend as wide as most of the plot, over a peak in the middle and a
+  ** line along the bottom: every corner hides some of it, so the y axis
+  ** is raised above the peak and the legend goes where nothing is (it
+  ** used to hide the peak: a shear cell's force against strain) */
+  {
+    double xp[41], yp[41], xq[1] = {20}, yq[1] = {1};
+    long n = 0;
+    int k, x, y, hide = 0;
+    plot_series w[2] = {{xp, yp, 41, "a legend entry that is wider than half of the plot", PLOT_LINE},
+                        {xq, yq, 1, "the peak", PLOT_POINTS}};
+    for (k = 0; k <= 40; k++) {
+      xp[k] = k;
+      yp[k] = k >= 16 && k <= 24 ? 1 - fabs(k - 20.0) / 4.0 : 0;
+    }
+    UNIT_CHECK(plot_draw(&c, &L, w, 2, &o, err, sizeof err) == 0, "wide legend: %s", err);
+    plot_map(&L, &o, 20, 1, &px, &py);
+    UNIT_CHECK(canvas_get(&c, (int)px, (int)py) == cmap_category(1),
+               "wide legend: the peak's marker shows (y axis to %g)", L.yhi);
+    /* the line's pixels between samples, checked along every segment */
+    for (k = 0; k < 40; k++) {
+      double ax, ay, bx, by;
+      int j;
+      plot_map(&L, &o, xp[k], yp[k], &ax, &ay);
+      plot_map(&L, &o, xp[k + 1], yp[k + 1], &bx, &by);
+      for (j = 1; j < 8; j++) {
+        x = (int)floor(ax + (bx - ax) * j / 8 + 0.5);
+        y = (int)floor(ay + (by - ay) * j / 8 + 0.5);
+        n++;
+        { /* a one-pixel line: blank if nothing but white around the point */
+          int a, b, ink = 0;
+          for (a = -1; a <= 1; a++)
+            for (b = -1; b <= 1; b++)
+              if (canvas_get(&c, x + a, y + b) == cmap_category(0)) ink++;
+          if (!ink) hide++;
+        }
+      }
+    }
+    UNIT_CHECK(hide == 0, "wide legend: %d of %ld points along the line show no line", hide, n);
+    canvas_free(&c);
+  }
   /* log axes skip x <= 0, and the file decodes */
   s[0].x = xl; s[0].y = yl; s[0].n = 3;
   o.xlog = o.ylog = 1;

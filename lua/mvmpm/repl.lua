@@ -1,15 +1,16 @@
 -- mvmpm.repl: help at the prompt, and readable tables: the prompt shows
 -- a result through show(), which prints a table's entries sorted by key,
--- numbers to 6 significant digits, one level deep.
+-- numbers to 6 significant digits, one level deep (short vectors of
+-- numbers whole).
 local text = [[
 sim:step(n)          advance n steps (default 1)
 sim:run(t)           advance to time t (default: the scene's t_end)
 sim:energy()         kinetic, strain, dissipated, plastic, viscous, boundary_work, thermal_work, total, residual, px, py, angmom
 sim:bodies()         the bodies; b:diag(), b:centroid(), b:velocity(), b:omega(), b:mass()
 sim:particles(name)  copy of a particle field (sim:particles() lists them)
-sim:snapshot(path)   write an HDF5 snapshot now
+sim:snapshot(path)   write an HDF5 snapshot now (a relative path: from the current directory); returns the path
 sim:temperature(T)   impose a uniform temperature (a number or function(t)); sim:temperature() reads it
-sim:render{file = "x.png", by = "pressure"}   a picture now (by body, pressure, sdiff, speed, a field)
+sim:render{file = "x.png", by = "pressure"}   a picture now (by body, pressure, sdiff, speed, a field), in the output directory; returns the path
 sim.t sim.dt sim.steps sim.n   time, step size, step count, particle count
 sim.flip = f  sim.cfl = c  sim.dt = d  sim.friction = mu   change settings between steps
 show(v)              print a value as the prompt does (tables sorted, one level)
@@ -33,10 +34,25 @@ local function tab(t)
     return tostring(a) < tostring(b)
   end)
   local n = #t
+  -- one level deep; a short vector of numbers (a 3-D body's omega,
+  -- angmom) is shown whole, since it is the value itself
+  local function inner(v)
+    if getmetatable(v) then return tostring(v) end
+    local m, k = #v, 0
+    for _ in pairs(v) do k = k + 1 end
+    if m >= 1 and m <= 3 and k == m then
+      local p = {}
+      for i = 1, m do
+        if type(v[i]) ~= "number" then return string.format("{...%d}", m) end
+        p[i] = fmt(v[i])
+      end
+      return "{" .. table.concat(p, ", ") .. "}"
+    end
+    return string.format("{...%d}", m)
+  end
   for _, k in ipairs(keys) do
     local v = t[k]
-    local vs = type(v) == "table" and (getmetatable(v) and tostring(v) or
-               string.format("{...%d}", #v)) or fmt(v)
+    local vs = type(v) == "table" and inner(v) or fmt(v)
     if math.type(k) == "integer" and k >= 1 and k <= n then parts[#parts + 1] = vs
     else parts[#parts + 1] = tostring(k) .. " = " .. vs end
   end

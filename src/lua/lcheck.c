@@ -227,29 +227,37 @@ double chk_result(lua_State *L, int idx, int fnidx, const char *fmt, ...) {
                      luaL_typename(L, idx));
 }
 
-int chk_option(lua_State *L, int idx, const char *what, const char *key,
-               int def, const char *const opts[]) {
-  const char *s;
+int chk_oneof(lua_State *L, const char *s, const char *what,
+              const char *const opts[]) {
   int k;
-  lua_getfield(L, idx, key);
-  if (lua_isnil(L, -1)) { lua_pop(L, 1); return def; }
-  if (lua_type(L, -1) != LUA_TSTRING)
-    luaL_error(L, "%s: field '%s' must be a string (got %s)", what, key,
-               luaL_typename(L, -1));
-  s = lua_tostring(L, -1);
   for (k = 0; opts[k]; k++)
-    if (strcmp(s, opts[k]) == 0) { lua_pop(L, 1); return k; }
+    if (strcmp(s, opts[k]) == 0) return k;
   {
     luaL_Buffer b;
     const char *sug = chk_suggest(s, opts);
     luaL_buffinit(L, &b);
     listall(&b, opts);
     luaL_pushresult(&b);
-    luaL_error(L, "%s: field '%s' must be one of %s (got '%s'%s%s%s)", what,
-               key, lua_tostring(L, -1), s, sug ? "; did you mean '" : "",
+    luaL_error(L, "%s must be one of %s (got '%s'%s%s%s)", what,
+               lua_tostring(L, -1), s, sug ? "; did you mean '" : "",
                sug ? sug : "", sug ? "'?" : "");
   }
-  return def;
+  return -1;
+}
+
+int chk_option(lua_State *L, int idx, const char *what, const char *key,
+               int def, const char *const opts[]) {
+  char field[160];
+  int k;
+  lua_getfield(L, idx, key);
+  if (lua_isnil(L, -1)) { lua_pop(L, 1); return def; }
+  if (lua_type(L, -1) != LUA_TSTRING)
+    luaL_error(L, "%s: field '%s' must be a string (got %s)", what, key,
+               luaL_typename(L, -1));
+  snprintf(field, sizeof field, "%s: field '%s'", what, key);
+  k = chk_oneof(L, lua_tostring(L, -1), field, opts);
+  lua_pop(L, 1);
+  return k;
 }
 
 int chk_bool(lua_State *L, int idx, const char *what, const char *key,

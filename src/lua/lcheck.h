@@ -20,6 +20,10 @@ void chk_keys(lua_State *L, int idx, const char *what,
 enum { CHK_OPENLO = 1, CHK_OPENHI = 2, CHK_INT = 4, CHK_REQUIRED = 8 };
 double chk_num(lua_State *L, int idx, const char *what, const char *key,
                double def, double lo, double hi, int flags);
+/* the index of string s in opts (NULL-ended), else an error naming what
+** ("sides.left: the kind"), the allowed values and the nearest */
+int chk_oneof(lua_State *L, const char *s, const char *what,
+              const char *const opts[]);
 /* string field, one of the options (NULL terminated); returns its index */
 int chk_option(lua_State *L, int idx, const char *what, const char *key,
                int def, const char *const opts[]);

@@ -521,7 +521,7 @@ int lbody_new(lua_State *L) {
   size_t k;
   double v0[DIM] = {0}, w3[3] = {0}, c[DIM] = {0}, scale = 1, bond, T0, Th;
   size_t first;
-  int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0, tfun, spin, own;
+  int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0, cut = 0, tfun, spin, own;
   turned lt;
   double blo[DIM], bhi[DIM];
   int32_t field;
@@ -598,6 +598,12 @@ int lbody_new(lua_State *L) {
       bhi[d] = sh->hi[d];
       if (!s->g.periodic[d] && (sh->hi[d] <= s->g.lo[d] || sh->lo[d] >= s->g.hi[d]))
         outside = 1;
+      /* past a side by more than round-off (a shape drawn to the side's
+      ** coordinate is inside) */
+      if (!isrest && sh->kind != SH_FUNC && !s->g.periodic[d] &&
+          (sh->lo[d] < s->g.lo[d] - 1e-9 * s->g.h ||
+           sh->hi[d] > s->g.hi[d] + 1e-9 * s->g.h))
+        cut |= 1 << d;
     }
     lua_insert(L, -2);  /* name on top for messages */
     if (own) /* the points on its own lattice; the grid's sites marked */
@@ -634,6 +640,21 @@ int lbody_new(lua_State *L) {
     }
     luaL_error(L, "body '%s': no particle falls inside its shape (is it at least "
                   "one seeding point, a cell / ppc, across?)", name);
+  }
+  if (cut) { /* seeded, but only the part inside: said, not refused (a
+              ** slab may be meant to run past a side) */
+    char sb[160];
+    int nb = 0;
+    for (d = 0; d < DIM; d++)
+      if (cut & (1 << d))
+        nb += snprintf(sb + nb, sizeof sb - nb, "%s%c %g .. %g against the "
+                       "domain's %g .. %g", nb ? "; " : "", "xyz"[d], blo[d],
+                       bhi[d], s->g.lo[d], s->g.hi[d]);
+    luaL_where(L, 1);
+    fprintf(stderr, "mvmpm: warning: %sbody '%s': its shape runs past the "
+            "domain (%s); only the part inside is seeded (%zu particles)\n",
+            lua_tostring(L, -1), name, sb, bx->sd.n);
+    lua_pop(L, 1);
   }
   lua_getfield(L, 2, "driven");
   field = fieldof(L, 1, ls, !lua_isnil(L, -1));

@@ -184,7 +184,8 @@ int lrender_sim(lua_State *L) {
   }
   if (render_file(file, &s->ps, &o, err, sizeof err))
     luaL_error(L, "%s: %s", what, err);
-  return 0;
+  lua_pushstring(L, file); /* where it went (the prompt shows it) */
+  return 1;
 }
 
 /* a list of numbers into a userdata array (NaN and infinities allowed:

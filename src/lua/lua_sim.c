@@ -129,11 +129,16 @@ static void side_spec(lua_State *L, lsim *ls, int simidx, int k, int idx,
                   "{\"wall\", friction = mu, velocity = {%s}}", what,
                DIM == 2 ? "vx, vy" : "vx, vy, vz");
   chk_keys(L, idx, what, keys);
-  lua_rawgeti(L, idx, 1);
-  lua_setfield(L, idx, "kind");
-  kind = chk_option(L, idx, what, "kind", SIDE_WALL, side_kinds);
-  lua_pushnil(L);
-  lua_setfield(L, idx, "kind");
+  if (lua_rawgeti(L, idx, 1) == LUA_TNIL) kind = SIDE_WALL;
+  else {
+    char kw[80];
+    if (lua_type(L, -1) != LUA_TSTRING)
+      luaL_error(L, "%s: the side's kind (its first entry) must be a string "
+                    "(got %s)", what, luaL_typename(L, -1));
+    snprintf(kw, sizeof kw, "%s: the side's kind", what);
+    kind = chk_oneof(L, lua_tostring(L, -1), kw, side_kinds);
+  }
+  lua_pop(L, 1);
   sd->mirror = kind == SIDE_SYMMETRY;
   sd->kind = sd->mirror ? SIDE_WALL : kind;
   periodic[k] = kind == SIDE_PERIODIC;
@@ -849,9 +854,11 @@ static int lbodies(lua_State *L) {
 static int lsnapshot(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   char buf[1100];
-  run_snapshot(L, ls, sandbox_path(L, luaL_checkstring(L, 2), "snapshot",
-                                   buf, sizeof buf));
-  return 0;
+  const char *path = sandbox_path(L, luaL_checkstring(L, 2), "snapshot", buf,
+                                  sizeof buf);
+  run_snapshot(L, ls, path);
+  lua_pushstring(L, path); /* where it went (the prompt shows it) */
+  return 1;
 }
 
 /* sim:state(tbl) -> tbl: a plain table a checkpoint saves and a restart

@@ -641,7 +641,9 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   plain pl;
   double warn_from;
   simidx = lua_absindex(L, simidx);
-  if (s->ps.n == 0) luaL_error(L, "run: the simulation has no particles (add a body)");
+  if (s->ps.n == 0)
+    luaL_error(L, "run: %s: the simulation has no particles (add a body with "
+                  "sim:body{...})", ls->scene[0] ? ls->scene : "sim");
   if (!ls->advised) { /* now that the bodies (fields) are known */
     /* printed once per process: a study or a test script that builds
     ** many such scenes says it once; each keeps it in sim.advice */

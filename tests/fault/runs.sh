@@ -153,6 +153,29 @@ ok $? "  no carriage returns in the file"
 ! grep -q progress progq.err
 ok $? "--quiet: none"
 
+# --- a body whose shape runs past the domain: seeded inside, and said
+cat >part.lua <<'LUA'
+local mvmpm = require "mvmpm"
+local sim = mvmpm.sim {domain = {x = {0, 3}, y = {0, 3}}, cell = 0.125, t_end = 0.01}
+sim:body {name = "slab", shape = mvmpm.rect {lo = {0, 0}, hi = {3, 0.5}},
+          material = mvmpm.elastic {K = 1, G = 0.5, density = 1}}
+sim:body {name = "disc", shape = mvmpm.disk {center = {2.9, 1.5}, radius = 0.5},
+          material = mvmpm.elastic {K = 1, G = 0.5, density = 1}}
+return sim
+LUA
+"$bin" run part.lua --out part --quiet >out.txt 2>&1
+st=$?
+[ "$st" -eq 0 ] && [ "$(grep -c 'runs past the domain' out.txt)" -eq 1 ] &&
+  grep 'runs past the domain' out.txt | grep -q "part.lua:5: body 'disc'.*x 2.4 .. 3.4 against the domain's 0 .. 3"
+ok $? "a disc past the right side: one warning naming file, line, body and extents (the slab drawn to the sides: none)" \
+   "$(grep -m1 'past the domain' out.txt | cut -c1-160)"
+# --- a scene without bodies: the message names the scene
+printf 'local mvmpm = require "mvmpm"\nreturn mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, t_end = 0.1}\n' >empty.lua
+"$bin" run empty.lua --out empty --quiet >out.txt 2>&1
+st=$?
+[ "$st" -eq 1 ] && grep -q "empty.lua: the simulation has no particles" out.txt
+ok $? "a scene with no body: status 1, the scene named" "$(head -1 out.txt)"
+
 # --- every scene in scenarios/ runs under --sandbox (a few steps)
 for s in bond_pull:0.05 concentric_debond:0.05 cylinder_bounce:0.2 debond_front:0.05 \
          two_disks:0.02 shear_dry:1e-7 shear_binder:1e-7; do

@@ -65,6 +65,8 @@ local rules = {
     3, {"unknown field 'materal'", "did you mean 'material'"}},
   {"a wall's velocity along its normal", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {left = {"wall", velocity = {1, 0}}}}',
     2, {"sides.left", "velocity's x component must be 0"}},
+  {"a side's kind, misspelt", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = "wal"}',
+    2, {"sides.left: the side's kind", "free, wall, periodic, symmetry", "'wal'", "did you mean 'wall'"}},
   {"friction only on walls", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, sides = {"free", friction = 0.3}}',
     2, {"only a wall has friction"}},
   {"friction >= 0", 'return mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 0.1, contact = {friction = -1}}',

@@ -1,6 +1,7 @@
 -- Two elastic disks meeting head on (the geometry of Sulsky, Chen &
 -- Schreyer 1994): radius 0.2, centres (0.2, 0.2) and (0.8, 0.8) in a unit
--- square, velocities +-(0.1, 0.1), E = 1000, nu = 0.3, density 1000.
+-- square (widened for an offset), velocities +-(0.1, 0.1), E = 1000,
+-- nu = 0.3, density 1000.
 -- fields = "body" gives each disk its own velocity field (frictionless
 -- multi-field contact: they bounce apart); fields = "single" puts both on
 -- one grid field, where the interface cannot slip: in a glancing
@@ -19,8 +20,15 @@ local P = mvmpm.params {
 }
 local o = P.offset / math.sqrt(2)
 
+-- the unit square head on; with an offset, wide enough for the upper
+-- disk and a cell more (on the unit square its part past the side would
+-- not be seeded)
+local function hi(need)
+  if need <= 1 then return 1 end
+  return math.ceil((need + 1 / P.cells) * P.cells - 1e-9) / P.cells
+end
 local sim = mvmpm.sim {
-  domain = {x = {0, 1}, y = {0, 1}},
+  domain = {x = {0, hi(1 + o)}, y = {0, hi(1 - o)}},
   cell = 1 / P.cells,
   ppc = 2,
   sides = "free",

@@ -48,6 +48,34 @@ end
 -- over mu m g cos th times the distance slid; g = 1), residual (the
 -- energy budget's residual over the work of gravity, m g sin th times the
 -- distance), cpu (os.clock seconds)}
+-- a convex polygon {{x, y}, ...} cut to the box [lo, hi] in x and y
+-- (Sutherland-Hodgman): the tilted flat body's far corners run past the
+-- unit square at 45 and 60 degrees; seeding takes only the part inside
+-- anyway, so cut it is the same body, and said to be inside
+local function clip(poly, lo, hi)
+  local function cut(pts, d, c, keep)
+    local out = {}
+    for i = 1, #pts do
+      local a, b = pts[i], pts[i % #pts + 1]
+      local ina, inb = keep(a[d], c), keep(b[d], c)
+      if ina then out[#out + 1] = a end
+      if ina ~= inb then
+        local t = (c - a[d]) / (b[d] - a[d])
+        out[#out + 1] = {a[1] + t * (b[1] - a[1]), a[2] + t * (b[2] - a[2])}
+        out[#out][d] = c
+      end
+    end
+    return out
+  end
+  local ge = function(v, c) return v >= c end
+  local le = function(v, c) return v <= c end
+  for d = 1, 2 do
+    poly = cut(poly, d, lo, ge)
+    poly = cut(poly, d, hi, le)
+  end
+  return poly
+end
+
 function M.block(o)
   local L, T, t0fit = 0.2, o.t_end or 0.4, o.fit_from or 0.1
   local th = math.rad(o.deg or 30)
@@ -73,7 +101,7 @@ function M.block(o)
   local m = mvmpm.elastic {E = 200, nu = 0.3, density = 1}
   local lat = o.lattice and rot0 and {angle = -(o.deg or 30), origin = d3 and {P[1], P[2], 0} or P} or nil
   sim:body {name = "slope", material = m, driven = d3 and {0, 0, 0} or {0, 0}, lattice = lat,
-    shape = prism {pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}}
+    shape = prism(clip({pt(0, -0.1), pt(0.9, -0.1), pt(0.9, 0), pt(0, 0)}, 0, 1))}
   local b = sim:body {name = "block", material = m, lattice = lat,
     shape = prism {pt(0.1, 0), pt(0.1 + L, 0), pt(0.1 + L, L), pt(0.1, L)}}
   -- the spin about z (a 3-D body's omega is a vector)
@@ -105,7 +133,7 @@ function M.block(o)
           cpu = os.clock() - c0}
 end
 
--- o: cells (across the unit square), method, offset (0: head on),
+-- o: cells (across a unit length), method, offset (0: head on),
 -- shape ("linear"), gap ("touch"), threads.  Returns {kept (relative
 -- velocity across the closest approach's line of centres, after over
 -- before; 1 head on), spin (largest |omega| of either disc), spin_end,
@@ -123,10 +151,24 @@ end
 -- relative velocity across the line of centres, kept.  "kept" instead
 -- takes both velocities across one fixed line (the closest approach's),
 -- exact only for a short, elastic impact.
+-- The domain for an offset o (the upper disc's centre moved by (o, -o) /
+-- sqrt 2): the unit square head on, as Sulsky's; wide enough for the
+-- upper disc with a cell to spare otherwise (at o = 0.2 it reaches x =
+-- 1.14: on the unit square its side past x = 1 was not seeded, and the
+-- glancing cases met a cut disc), a whole number of cells.
+function M.discs_domain(offset, cells)
+  local o = offset / math.sqrt(2)
+  local function hi(need)
+    if need <= 1 then return 1 end
+    return math.ceil((need + 1 / cells) * cells - 1e-9) / cells
+  end
+  return {x = {0, hi(1 + o)}, y = {0, hi(1 - o)}}
+end
+
 function M.discs(o)
   local off = (o.offset or 0) / math.sqrt(2)
   local meth, win, pat = M.opts(o.method)
-  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / o.cells, ppc = 2,
+  local sim = mvmpm.sim {domain = M.discs_domain(o.offset or 0, o.cells), cell = 1 / o.cells, ppc = 2,
     sides = "free", t_end = o.t_end or 3.0, shape = o.shape or "linear", normals = meth,
     normal_window = win, normal_patch = pat, contact_gap = o.gap, threads = o.threads, body_contact = o.body_contact}
   local m = mvmpm.elastic {E = 1000, nu = 0.3, density = 1000}

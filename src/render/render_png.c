@@ -442,6 +442,10 @@ static double det_at(const particles *ps, size_t i) {
   return vec_det(T);
 }
 
+/* how far, in pixels, a particle's square is drawn past its edges in a
+** raster picture (particle(): the seams between particles) */
+#define RENDER_SEAL 0.35
+
 /* half the side of particle i's cube (square in 2-D) */
 static double halfside(const particles *ps, size_t i) {
   double v = ps->vol0[i] > 0 ? ps->vol0[i] : 0;
@@ -466,10 +470,29 @@ static void particle(pen *p, const render_layout *L, const particles *ps,
   }
   cx = L->dx0 + (ps->x[h][i] - o->lo[0]) * L->sc;
   cy = L->dy0 + (o->hi[1] - ps->x[u][i]) * L->sc;
+  for (k = 0; k < 2; k++) { /* the half edges, in pixels */
+    e[k][0] *= a * L->sc;
+    e[k][1] *= a * L->sc;
+  }
+  if (p->c) {
+    /* Raster only: each edge moved out by RENDER_SEAL pixels.  A body's
+    ** particles, moved and stretched each by its own F, do not abut
+    ** exactly once it turns or shears; a seam thinner than a pixel that
+    ** crosses a pixel's centre left a white pinhole inside a grain, which
+    ** reads as a crack.  The half edge e0 goes out by the seal over the
+    ** centre's distance to the edges it spans, |e0 x e1| / |e1|. */
+    double cr = fabs(e[0][0] * e[1][1] - e[0][1] * e[1][0]);
+    double l0 = hypot(e[0][0], e[0][1]), l1 = hypot(e[1][0], e[1][1]);
+    if (cr > 0) {
+      double g0 = 1 + RENDER_SEAL * l1 / cr, g1 = 1 + RENDER_SEAL * l0 / cr;
+      e[0][0] *= g0; e[0][1] *= g0;
+      e[1][0] *= g1; e[1][1] *= g1;
+    }
+  }
   for (k = 0; k < 4; k++) {
-    double s = (k == 0 || k == 3) ? -a : a, t = k < 2 ? -a : a;
-    xs[k] = cx + (e[0][0] * s + e[1][0] * t) * L->sc;
-    ys[k] = cy - (e[0][1] * s + e[1][1] * t) * L->sc;
+    double s = (k == 0 || k == 3) ? -1 : 1, t = k < 2 ? -1 : 1;
+    xs[k] = cx + e[0][0] * s + e[1][0] * t;
+    ys[k] = cy - (e[0][1] * s + e[1][1] * t);
   }
   p_poly(p, 4, xs, ys, col);
 }

@@ -20,15 +20,11 @@ local P = mvmpm.params {
 }
 local o = P.offset / math.sqrt(2)
 
--- the unit square head on; with an offset, wide enough for the upper
--- disk and a cell more (on the unit square its part past the side would
--- not be seeded)
-local function hi(need)
-  if need <= 1 then return 1 end
-  return math.ceil((need + 1 / P.cells) * P.cells - 1e-9) / P.cells
-end
 local sim = mvmpm.sim {
-  domain = {x = {0, hi(1 + o)}, y = {0, hi(1 - o)}},
+  -- the unit square head on; with an offset, wide enough for the upper
+  -- disk and a cell more (on the unit square its part past the side
+  -- would not be seeded)
+  domain = require("mvmpm.normals").discs_domain(P.offset, P.cells),
   cell = 1 / P.cells,
   ppc = 2,
   sides = "free",

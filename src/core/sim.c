@@ -228,8 +228,28 @@ void sim_scheme(const sim *s, char *buf, size_t n) {
            update_names[c->update], transfer_names[c->transfer], xpic, c->flip, c->ppc, c->cfl);
 }
 
+/* linear hats under USL: a node that a particle barely reaches has a
+** tiny mass and the full slope of the hat, so the velocity the stresses
+** give it there, read back through that slope, crushes the particles
+** beside it as they cross cells (MUSL's remap reads mass-weighted
+** particle velocities instead; GIMP and B-splines flatten at the edge).
+** Measured: a free disc (K = 1, G = 0.5) translating at 0.18 c and
+** spinning in a periodic box, 6.4 / 12.8 / 25.6 cells across it: det F
+** <= 0 at steps 184 / 214 / 877 under pure FLIP, 281 / 340 / 973 under
+** XPIC; against walls also under PIC (32 and 64 cells); in 3-D (a ball,
+** 5 cells across) det F down to 0.02 */
+static const char usl_linear[] =
+    "linear hats under USL (shape = \"linear\", update = \"usl\") crush "
+    "particles that cross cells: a free disc translating and spinning "
+    "stopped with det F <= 0 within 900 steps at 6, 13 and 26 cells "
+    "across it, under FLIP, XPIC and, against walls, PIC; update = "
+    "\"musl\" or \"usavg\", or GIMP or B-splines under USL, hold "
+    "(docs/stability.md)";
+
 const char *sim_advice(const sim *s) {
   int k, walls = 0;
+  if (s->cfg.shape == SHAPE_LINEAR && s->cfg.update == UPDATE_USL)
+    return usl_linear;
   for (k = 0; k < NSIDES; k++)
     if (s->sides[k].kind == SIDE_WALL && !s->g.periodic[k / 2]) walls = 1;
   if (s->cfg.transfer != TRANSFER_FLIP || s->cfg.flip < 1 || !(walls || s->nfield > 1))
@@ -542,10 +562,15 @@ int constitutive(sim *s, double dt) {
   if (sum.jmin <= sum.jmax) { s->e.jmin = sum.jmin; s->e.jmax = sum.jmax; }
   s->e.nbadj = sum.nbadj;
   if (sum.nbadj) {
+    const int usl = cfg->shape == SHAPE_LINEAR && cfg->update == UPDATE_USL;
     snprintf(s->err, sizeof s->err,
              "step %ld: %zu particle(s) with det F <= 0 (min %.3g): the "
-             "material was crushed; reduce the time step (cfl) or refine",
-             s->step, sum.nbadj, sum.jmin);
+             "material was crushed; %s",
+             s->step, sum.nbadj, sum.jmin,
+             usl ? "linear hats under USL do this where particles cross "
+                   "cells: use update = \"musl\" or \"usavg\", or another "
+                   "shape"
+                 : "reduce the time step (cfl) or refine");
     return -1;
   }
   return 0;

@@ -509,6 +509,20 @@ static void body_omega(lua_State *L, double *w3) {
   for (d = 0; d < NROT; d++) w3[3 - NROT + d] = w[d];
 }
 
+
+/* a material or shape of the other dimension at the top: made before
+** mvmpm.sim{dim = ...} switched the module (a script, not a scene file,
+** which is read for its dimension first), so say that rather than
+** "must be a material (got userdata)" */
+static void other_dim(lua_State *L, const char *name, const char *what,
+                      const char *mt) {
+  if (luaL_testudata(L, -1, mt))
+    luaL_error(L, "body '%s': field '%s' is a %d-D %s, made before this %d-D "
+                  "simulation: make materials and shapes after mvmpm.sim{dim "
+                  "= %d} (the mvmpm functions build for the dimension of the "
+                  "last simulation made)", name, what, LSIM_OTHER_DIM, what,
+               DIM, DIM);
+}
 int lbody_new(lua_State *L) {
   static const char *const keys[] = {"name", "shape", "points", "material",
       "velocity", "angular_velocity", "field", "driven", "volume", "overlap",
@@ -538,9 +552,11 @@ int lbody_new(lua_State *L) {
   lua_pop(L, 1);
   lua_getfield(L, 2, "material");
   if (lua_isnil(L, -1)) luaL_error(L, "body '%s': field 'material' is required", name);
-  if (!luaL_testudata(L, -1, LMAT_MT))
+  if (!luaL_testudata(L, -1, LMAT_MT)) {
+    other_dim(L, name, "material", "mvmpm.material" LSIM_OTHER_TAG);
     luaL_error(L, "body '%s': field 'material' must be a material (got %s)",
                name, luaL_typename(L, -1));
+  }
   mi = matindex(L, 1, lua_gettop(L));
   lua_pop(L, 1);
   material_speed(L, ls, mi, name);
@@ -582,11 +598,13 @@ int lbody_new(lua_State *L) {
   if (!lua_isnil(L, -2)) {
     lshape *sh;
     lua_pop(L, 1);
-    if (!luaL_testudata(L, -1, LSHAPE_MT))
+    if (!luaL_testudata(L, -1, LSHAPE_MT)) {
+      other_dim(L, name, "shape", "mvmpm.shape" LSIM_OTHER_TAG);
       luaL_error(L, "body '%s': field 'shape' must be a shape (mvmpm.%s, "
                     "cylinder, region or rest)", name,
                  DIM == 2 ? "disk, rect, polygon, annulus"
                           : "ball, box, extrude, shell");
+    }
     sh = lshape_check(L, -1);
     isrest = sh->kind == SH_REST;
     if (own && isrest)

@@ -293,6 +293,25 @@ refuses("a sim of dimension 4", function()
   mvmpm.sim {domain = domain(), cell = 0.1, dim = 4} end, "sim: field 'dim'")
 refuses("a sim of dimension 2.5", function()
   mvmpm.sim {domain = domain(), cell = 0.1, dim = 2.5} end, "sim: field 'dim'")
+-- a material or shape made before the simulation switched dimension
+-- (a script, not a scene file): named as such, not "must be a material
+-- (got userdata)"
+do
+  local O = 5 - D
+  local odom = O == 2 and {x = {0, 1}, y = {0, 1}} or {x = {0, 1}, y = {0, 1}, z = {0, 1}}
+  mvmpm.sim {domain = odom, cell = 0.5, dim = O}
+  local omat = mvmpm.elastic {K = 1, G = 1, density = 1}
+  local oshape = O == 2 and mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}
+                 or mvmpm.ball {center = {0.5, 0.5, 0.5}, radius = 0.2}
+  local s = mvmpm.sim {domain = domain(), cell = 0.25, dim = D}
+  local mat = mvmpm.elastic {K = 1, G = 1, density = 1}
+  local shp = D == 2 and mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}
+              or mvmpm.ball {center = {0.5, 0.5, 0.5}, radius = 0.2}
+  refuses("a material of the other dimension", function() s:body {shape = shp, material = omat} end,
+          string.format("field 'material' is a %d-D material, made before this %d-D simulation", O, D))
+  refuses("a shape of the other dimension", function() s:body {shape = oshape, material = mat} end,
+          string.format("field 'shape' is a %d-D shape, made before this %d-D simulation", O, D))
+end
 if D == 2 then
   refuses("extrude in 2-D", function()
     mvmpm.extrude {polygon = {{0, 0}, {1, 0}, {0, 1}}, lo = 0, hi = 1} end,

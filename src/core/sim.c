@@ -315,6 +315,26 @@ const char *sim_wall_advice(const sim *s) {
            "impacts 1 and 2 at 16 cells per diameter, as friction 0.1 would "
            "(the node rule: 0.0006); for bodies that slide or roll on walls "
            "use \"node\" or \"patch\" (docs/verification.md, spring walls)";
+  /* measured (tests/verify/rolling.lua, last case): a disc (K = 10)
+  ** thrown spinning into a box of walls with friction 0.3 under gravity,
+  ** total energy above the work put in at its peak, 9.6 / 12.8 / 19.2
+  ** cells per diameter: B-splines 9.3 / 15.4 / 14.9 %, linear hats 6.7 /
+  ** 9.8 / 9.7 %; friction's booked work negative.  The couple's two
+  ** impulses move the slip at the wall line several times as much as the
+  ** patch's mean velocity, on which mu N and the slide test are judged,
+  ** so mu N can reverse that slip within a step */
+  if (s->cfg.wall_rule == WALL_COUPLE)
+    for (k = 0; k < NSIDES; k++) {
+      const side *sd = &s->sides[k];
+      if (sd->kind == SIDE_WALL && !sd->mirror && sd->mu > 0)
+        return "friction at the wall line (wall_contact = \"couple\") can "
+               "make energy where a spinning body slides and rolls on a "
+               "wall: a disc thrown spinning into a box of walls with "
+               "friction under gravity rises 9 to 15 % above the work put in "
+               "at 10 to 19 cells per diameter, friction booking negative "
+               "work; \"patch\" does not (docs/verification.md, contact: "
+               "rolling and spin-up)";
+    }
   if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, couple, penalty */
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];

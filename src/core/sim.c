@@ -301,8 +301,17 @@ const char *sim_advice(const sim *s) {
 ** 2.28 / 1.32 / 1.13, patch rule 1.079 / 1.017 / 1.001.  Under the node
 ** rule the nodes ahead of the contact point, stopped one by one, turn
 ** the disc back, and it slides where it would roll. */
-const char *sim_wall_advice(const sim *s) {
+/* whether some wall side (not a mirror plane) has friction */
+static int frictional_walls(const sim *s) {
   int k;
+  for (k = 0; k < NSIDES; k++) {
+    const side *sd = &s->sides[k];
+    if (sd->kind == SIDE_WALL && !sd->mirror && sd->mu > 0) return 1;
+  }
+  return 0;
+}
+
+const char *sim_wall_advice(const sim *s) {
   /* measured (tests/verify/wall_spring.lua): the frictionless bounce's
   ** flight-mean spin after impacts 1 and 2 at 8, 16, 32 cells, node rule
   ** 0.001 / -0.002, 0.0006 / 0.0003, 0.0001 / 0.0003; spring walls -0.014
@@ -315,6 +324,7 @@ const char *sim_wall_advice(const sim *s) {
            "impacts 1 and 2 at 16 cells per diameter, as friction 0.1 would "
            "(the node rule: 0.0006); for bodies that slide or roll on walls "
            "use \"node\" or \"patch\" (docs/verification.md, spring walls)";
+  if (!frictional_walls(s)) return NULL;
   /* measured (tests/verify/rolling.lua, last case): a disc (K = 10)
   ** thrown spinning into a box of walls with friction 0.3 under gravity,
   ** total energy above the work put in at its peak, 9.6 / 12.8 / 19.2
@@ -322,31 +332,22 @@ const char *sim_wall_advice(const sim *s) {
   ** 9.8 / 9.7 %; friction's booked work negative.  The couple's two
   ** impulses move the slip at the wall line several times as much as the
   ** patch's mean velocity, on which mu N and the slide test are judged,
-  ** so mu N can reverse that slip within a step */
+  ** so mu N can reverse that slip within a step (boundary.c) */
   if (s->cfg.wall_rule == WALL_COUPLE)
-    for (k = 0; k < NSIDES; k++) {
-      const side *sd = &s->sides[k];
-      if (sd->kind == SIDE_WALL && !sd->mirror && sd->mu > 0)
-        return "friction at the wall line (wall_contact = \"couple\") can "
-               "make energy where a spinning body slides and rolls on a "
-               "wall: a disc thrown spinning into a box of walls with "
-               "friction under gravity rises 9 to 15 % above the work put in "
-               "at 10 to 19 cells per diameter, friction booking negative "
-               "work; \"patch\" does not (docs/verification.md, contact: "
-               "rolling and spin-up)";
-    }
-  if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, couple, penalty */
-  for (k = 0; k < NSIDES; k++) {
-    const side *sd = &s->sides[k];
-    if (sd->kind == SIDE_WALL && !sd->mirror && sd->mu > 0)
-      return "walls with friction under the node rule (wall_contact = "
-             "\"node\", the default) hardly turn round bodies: a disc thrown "
-             "along a floor slides where it would roll, and friction takes "
-             "2.3, 1.3, 1.13 times the rigid disc's work at 8, 16, 32 cells "
-             "per diameter; wall_contact = \"patch\" 1.08, 1.02, 1.001 "
-             "(docs/verification.md, friction work against the rigid disc)";
-  }
-  return NULL;
+    return "friction at the wall line (wall_contact = \"couple\") can "
+           "make energy where a spinning body slides and rolls on a "
+           "wall: a disc thrown spinning into a box of walls with "
+           "friction under gravity rises 9 to 15 % above the work put in "
+           "at 10 to 19 cells per diameter, friction booking negative "
+           "work; \"patch\" does not (docs/verification.md, contact: "
+           "rolling and spin-up)";
+  if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, penalty */
+  return "walls with friction under the node rule (wall_contact = "
+         "\"node\", the default) hardly turn round bodies: a disc thrown "
+         "along a floor slides where it would roll, and friction takes "
+         "2.3, 1.3, 1.13 times the rigid disc's work at 8, 16, 32 cells "
+         "per diameter; wall_contact = \"patch\" 1.08, 1.02, 1.001 "
+         "(docs/verification.md, friction work against the rigid disc)";
 }
 
 /* what the numerics took (the transfer's smoothing and the nodes'

@@ -295,12 +295,6 @@ const char *sim_advice(const sim *s) {
   return NULL;
 }
 
-/* measured (tests/verify/friction_work.lua): a disc thrown without spin
-** along a floor with mu = 0.3, friction work over the rigid disc's (it
-** slides until it rolls) at 8, 16, 32 cells per diameter: node rule
-** 2.28 / 1.32 / 1.13, patch rule 1.079 / 1.017 / 1.001.  Under the node
-** rule the nodes ahead of the contact point, stopped one by one, turn
-** the disc back, and it slides where it would roll. */
 /* whether some wall side (not a mirror plane) has friction */
 static int frictional_walls(const sim *s) {
   int k;
@@ -311,6 +305,12 @@ static int frictional_walls(const sim *s) {
   return 0;
 }
 
+/* measured (tests/verify/friction_work.lua): a disc thrown without spin
+** along a floor with mu = 0.3, friction work over the rigid disc's (it
+** slides until it rolls) at 8, 16, 32 cells per diameter: node rule
+** 2.28 / 1.32 / 1.13, patch rule 1.079 / 1.017 / 1.001.  Under the node
+** rule the nodes ahead of the contact point, stopped one by one, turn
+** the disc back, and it slides where it would roll. */
 const char *sim_wall_advice(const sim *s) {
   /* measured (tests/verify/wall_spring.lua): the frictionless bounce's
   ** flight-mean spin after impacts 1 and 2 at 8, 16, 32 cells, node rule

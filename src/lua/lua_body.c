@@ -509,7 +509,6 @@ static void body_omega(lua_State *L, double *w3) {
   for (d = 0; d < NROT; d++) w3[3 - NROT + d] = w[d];
 }
 
-
 /* a material or shape of the other dimension at the top: made before
 ** mvmpm.sim{dim = ...} switched the module (a script, not a scene file,
 ** which is read for its dimension first), so say that rather than
@@ -523,6 +522,7 @@ static void other_dim(lua_State *L, const char *name, const char *what,
                   "last simulation made)", name, what, LSIM_OTHER_DIM, what,
                DIM, DIM);
 }
+
 int lbody_new(lua_State *L) {
   static const char *const keys[] = {"name", "shape", "points", "material",
       "velocity", "angular_velocity", "field", "driven", "volume", "overlap",

@@ -238,6 +238,10 @@ void sim_scheme(const sim *s, char *buf, size_t n) {
 ** <= 0 at steps 184 / 214 / 877 under pure FLIP, 281 / 340 / 973 under
 ** XPIC; against walls also under PIC (32 and 64 cells); in 3-D (a ball,
 ** 5 cells across) det F down to 0.02 */
+static int usl_linear_hats(const sim_cfg *c) {
+  return c->shape == SHAPE_LINEAR && c->update == UPDATE_USL;
+}
+
 static const char usl_linear[] =
     "linear hats under USL (shape = \"linear\", update = \"usl\") crush "
     "particles that cross cells: a free disc translating and spinning "
@@ -248,8 +252,7 @@ static const char usl_linear[] =
 
 const char *sim_advice(const sim *s) {
   int k, walls = 0;
-  if (s->cfg.shape == SHAPE_LINEAR && s->cfg.update == UPDATE_USL)
-    return usl_linear;
+  if (usl_linear_hats(&s->cfg)) return usl_linear;
   for (k = 0; k < NSIDES; k++)
     if (s->sides[k].kind == SIDE_WALL && !s->g.periodic[k / 2]) walls = 1;
   if (s->cfg.transfer != TRANSFER_FLIP || s->cfg.flip < 1 || !(walls || s->nfield > 1))
@@ -583,12 +586,12 @@ int constitutive(sim *s, double dt) {
   if (sum.jmin <= sum.jmax) { s->e.jmin = sum.jmin; s->e.jmax = sum.jmax; }
   s->e.nbadj = sum.nbadj;
   if (sum.nbadj) {
-    const int usl = cfg->shape == SHAPE_LINEAR && cfg->update == UPDATE_USL;
     snprintf(s->err, sizeof s->err,
              "step %ld: %zu particle(s) with det F <= 0 (min %.3g): the "
              "material was crushed; %s",
              s->step, sum.nbadj, sum.jmin,
-             usl ? "linear hats under USL do this where particles cross "
+             usl_linear_hats(cfg)
+                 ? "linear hats under USL do this where particles cross "
                    "cells: use update = \"musl\" or \"usavg\", or another "
                    "shape"
                  : "reduce the time step (cfl) or refine");

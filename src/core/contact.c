@@ -536,6 +536,15 @@ static double traction(const sim *s, int32_t n, int32_t sl, int drv) {
   return A > 0 ? F / A : 0;
 }
 
+double contact_bond_traction(const sim *s, int32_t n, int32_t sl, int odriven) {
+  return traction(s, n, sl, odriven);
+}
+
+void contact_bond_fits(sim *s) {
+  if (s->fbond >= 0 && s->cfg.bond_fit && s->g.nshared)
+    par_run(s->work.par, fits_part, s);
+}
+
 /* the strength slot sl has left in this pass: none once cut.  A cut is
 ** only recorded (scut) while the pass runs, and sb is cleared after it
 ** (bond_sums), so that every node's traction reads its neighbours'

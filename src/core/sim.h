@@ -440,6 +440,12 @@ int32_t bond_driven(const sim *s, int32_t n);
 ** of both sides' (a drive's: the slot's) and their law's cap; 0 where
 ** either side has none left or the law does not bond them */
 double contact_bond(const sim *s, int32_t sl, int32_t o, int odriven);
+/* contact.c: the normal traction the bond test reads for slot sl at
+** shared node n (odriven: its partner is a driven body's), and the fits
+** it reads under bond_traction = "fit" (after bond_gather; the step
+** makes them in contact_apply) */
+double contact_bond_traction(const sim *s, int32_t n, int32_t sl, int odriven);
+void contact_bond_fits(sim *s);
 void book_finish(sim *s);     /* book.c: impulses' work, second half */
 void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 /* wall_penalty.c: the penalty walls' forces on the particles, onto q;

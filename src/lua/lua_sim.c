@@ -9,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "diag_bond.h"
 #include "diag_contact.h"
 #include "diag_overlap.h"
 #include "diag_wall.h"
@@ -1021,6 +1022,33 @@ static int lcontacts(lua_State *L) {
   return 1;
 }
 
+/* sim:bonds() -> {x =, y =, (z =,) body =, partner =, traction =,
+** strength =}: arrays over the bonded interface nodes (diag_bond.h),
+** body ids 1-based */
+static int lbonds(lua_State *L) {
+  static const char *const xn[] = {"x", "y", "z"};
+  lsim *ls = lsim_check(L, 1);
+  bond_node *b;
+  size_t n, i;
+  int d;
+  if (diag_bonds(&ls->s, &b, &n)) return luaL_error(L, "%s", ls->s.err);
+  lua_createtable(L, 0, DIM + 4);
+  for (d = 0; d < DIM + 4; d++) {
+    static const char *const fn[] = {"body", "partner", "traction", "strength"};
+    lua_createtable(L, (int)n, 0);
+    for (i = 0; i < n; i++) {
+      if (d < DIM) lua_pushnumber(L, b[i].x[d]);
+      else if (d == DIM) lua_pushinteger(L, b[i].body + 1);
+      else if (d == DIM + 1) lua_pushinteger(L, b[i].partner + 1);
+      else lua_pushnumber(L, d == DIM + 2 ? b[i].traction : b[i].strength);
+      lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    lua_setfield(L, -2, d < DIM ? xn[d] : fn[d - DIM]);
+  }
+  free(b);
+  return 1;
+}
+
 static int lstable_dt(lua_State *L) {
   lsim *ls = lsim_check(L, 1);
   if (!ls->s.started) sim_begin(&ls->s);
@@ -1156,7 +1184,7 @@ void lsim_open(lua_State *L) {
       {"heat", lsim_heat},
       {"wall_force", lwall_force}, {"wall_nodes", lwall_nodes},
       {"overlap", loverlap},
-      {"contacts", lcontacts}, {"state", lstate},
+      {"contacts", lcontacts}, {"bonds", lbonds}, {"state", lstate},
       {"settle", lsettle}, {"at_end", lat_end},
       {NULL, NULL}};
   luaL_newmetatable(L, LSIM_MT);

@@ -1027,6 +1027,7 @@ static int lcontacts(lua_State *L) {
 ** body ids 1-based */
 static int lbonds(lua_State *L) {
   static const char *const xn[] = {"x", "y", "z"};
+  static const char *const fn[] = {"body", "partner", "traction", "strength"};
   lsim *ls = lsim_check(L, 1);
   bond_node *b;
   size_t n, i;
@@ -1034,7 +1035,6 @@ static int lbonds(lua_State *L) {
   if (diag_bonds(&ls->s, &b, &n)) return luaL_error(L, "%s", ls->s.err);
   lua_createtable(L, 0, DIM + 4);
   for (d = 0; d < DIM + 4; d++) {
-    static const char *const fn[] = {"body", "partner", "traction", "strength"};
     lua_createtable(L, (int)n, 0);
     for (i = 0; i < n; i++) {
       if (d < DIM) lua_pushnumber(L, b[i].x[d]);

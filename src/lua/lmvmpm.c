@@ -352,6 +352,26 @@ int lmvmpm_loaded(lua_State *L, int base, const char *path) {
   return 0;
 }
 
+/*
+** A scene loaded by mvmpm.load starts as it would in a new process: with
+** the module in 2-D, its first dimension.  The module takes the
+** dimension of the last simulation made (lsim_dim_check), and what a
+** scene calls before its mvmpm.sim reads it: mvmpm.pack.bed without a
+** `dim` built a 2-D scene's bed in 3-D after a 3-D scene had been loaded
+** in the same process.  Not while mvmpm run or the prompt loads their
+** scene ("mvmpm.redo"): that process already is in the scene's
+** dimension.
+*/
+static void load_fresh(lua_State *L) {
+  int redo;
+  if (DIM == 2 || !lmvmpm_enter_other) return;
+  redo = lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.redo") == LUA_TBOOLEAN;
+  lua_pop(L, 1);
+  if (redo) return;
+  lua_pushcfunction(L, lmvmpm_enter_other);
+  lua_call(L, 0, 0);
+}
+
 /* mvmpm.load(path [, {name = value}]) -> the scene's simulation */
 static int load(lua_State *L) {
   const char *path = luaL_checkstring(L, 1);
@@ -360,6 +380,7 @@ static int load(lua_State *L) {
     return luaL_error(L, "mvmpm.load(\"%s\"): not allowed under --sandbox "
                       "(it reads other files)", path);
   lua_settop(L, 2);
+  load_fresh(L);
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.overrides"); /* 3: saved */
   lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.declared");  /* 4: saved */
   lua_newtable(L);
@@ -511,12 +532,13 @@ static void fill(lua_State *L, int mod) {
   lrender_open(L, mod);
 }
 
+/* with no arguments only the module changes dimension (load_fresh) */
 int lmvmpm_enter(lua_State *L) {
   int top = lua_gettop(L);
   if (lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.module") == LUA_TTABLE)
     fill(L, lua_gettop(L));
   lua_settop(L, top);
-  return lsim_new(L);
+  return top == 0 ? 0 : lsim_new(L);
 }
 
 int luaopen_mvmpm(lua_State *L) {

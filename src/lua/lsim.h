@@ -52,8 +52,9 @@
 
 /* mvmpm.sim{dim = ...} of the other dimension: the module table (the
 ** registry's "mvmpm.module") takes that dimension's functions, then its
-** sim constructor runs on the same arguments.  Weak: a build without the
-** other dimension (the stock interpreter's module) has none, and says so */
+** sim constructor runs on the same arguments (with none, only the module
+** changes: mvmpm.load's fresh start).  Weak: a build without the other
+** dimension (the stock interpreter's module) has none, and says so */
 int lmvmpm_enter2(lua_State *L) __attribute__((weak));
 int lmvmpm_enter3(lua_State *L) __attribute__((weak));
 /* what loading a scene does to the simulation it made (lmvmpm_load's

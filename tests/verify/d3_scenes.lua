@@ -123,3 +123,35 @@ shear_run({cells = 16, strain = 0.2}, "dry", 0.06)
 
 V.case "3-D shear cell with binder, 12 cells"
 shear_run({cells = 12, strain = 0.1, binder = true}, "binder", 0.06)
+
+-- A scene loaded after 3-D simulations starts in 2-D, as in a new
+-- process: what it calls before its mvmpm.sim reads the module's
+-- dimension (mvmpm.pack.bed without a dim).  Before, the module kept the
+-- last simulation's dimension, and this 2-D scene's bed was drawn as
+-- spheres in a 4 x 4 x 4 box.
+V.case "a 2-D scene loaded after 3-D ones is 2-D"
+do
+  V.holds("the module is 3-D after the 3-D scenes above", mvmpm.dim == 3, mvmpm.dim)
+  local path = os.tmpname()
+  local f = assert(io.open(path, "w"))
+  f:write([[
+local mvmpm = require "mvmpm"
+local pack = require "mvmpm.pack"
+local bed = pack.bed {width = 4, height = 4, packing = 0.4, seed = 5,
+  coarse = {mean = 1.2, spread = 0.1}, fine = {mean = 0.6, spread = 0.1},
+  min_diameter = 0.45, gap = 0.05}
+assert(bed.dim ~= 3, "a bed of spheres in a 2-D scene")
+local sim = mvmpm.sim {domain = {x = {-1, 5}, y = {-1, 5}}, cell = 0.1, t_end = 1}
+for _, g in ipairs(bed.grains) do
+  sim:body {shape = mvmpm.disk {center = {g.x, g.y}, radius = g.r},
+            material = mvmpm.elastic {K = 1, G = 0.5, density = 1}}
+end
+return sim
+]])
+  f:close()
+  local ok, sim = pcall(mvmpm.load, path)
+  os.remove(path)
+  V.holds("the scene loads, its bed of discs (" .. tostring(ok and "" or sim) .. ")", ok)
+  V.holds("its simulation is 2-D", ok and sim.dim == 2, ok and sim.dim)
+  V.above("its grains are bodies", ok and #sim:bodies() or 0, 1)
+end

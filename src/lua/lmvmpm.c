@@ -360,15 +360,20 @@ int lmvmpm_loaded(lua_State *L, int base, const char *path) {
 ** `dim` built a 2-D scene's bed in 3-D after a 3-D scene had been loaded
 ** in the same process.  Not while mvmpm run or the prompt loads their
 ** scene ("mvmpm.redo"): that process already is in the scene's
-** dimension.
+** dimension.  Read from the module, not this build's DIM: a 2-D load
+** kept in a local is still called after a 3-D simulation.
 */
 static void load_fresh(lua_State *L) {
-  int redo;
-  if (DIM == 2 || !lmvmpm_enter_other) return;
+  int top = lua_gettop(L), redo, dim = 2;
+  if (!lmvmpm_enter2) return;
   redo = lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.redo") == LUA_TBOOLEAN;
-  lua_pop(L, 1);
-  if (redo) return;
-  lua_pushcfunction(L, lmvmpm_enter_other);
+  if (!redo && lua_getfield(L, LUA_REGISTRYINDEX, "mvmpm.module") == LUA_TTABLE &&
+      lua_getfield(L, -1, "dim") == LUA_TNUMBER)
+    dim = (int)lua_tointeger(L, -1);
+  lua_settop(L, top);
+  if (redo || dim == 2) return;
+  if (dim == 2) return;
+  lua_pushcfunction(L, lmvmpm_enter2);
   lua_call(L, 0, 0);
 }
 

@@ -150,8 +150,16 @@ return sim
 ]])
   f:close()
   local ok, sim = pcall(mvmpm.load, path)
-  os.remove(path)
   V.holds("the scene loads, its bed of discs (" .. tostring(ok and "" or sim) .. ")", ok)
   V.holds("its simulation is 2-D", ok and sim.dim == 2, ok and sim.dim)
   V.above("its grains are bodies", ok and #sim:bodies() or 0, 1)
+  -- the same through the 2-D module's load, kept from before a 3-D
+  -- simulation was made (the module, not the function, says 3-D)
+  local load2 = mvmpm.load
+  mvmpm.sim {dim = 3, domain = {x = {0, 1}, y = {0, 1}, z = {0, 1}}, cell = 0.25}
+  V.holds("3-D again", mvmpm.dim == 3, mvmpm.dim)
+  ok, sim = pcall(load2, path)
+  os.remove(path)
+  V.holds("through a 2-D load kept in a local: 2-D (" .. tostring(ok and "" or sim) .. ")",
+    ok and sim.dim == 2, ok and sim.dim)
 end

@@ -372,7 +372,6 @@ static void load_fresh(lua_State *L) {
     dim = (int)lua_tointeger(L, -1);
   lua_settop(L, top);
   if (redo || dim == 2) return;
-  if (dim == 2) return;
   lua_pushcfunction(L, lmvmpm_enter2);
   lua_call(L, 0, 0);
 }

@@ -279,6 +279,16 @@ int lsim_env_threads(void) {
   return n > PAR_MAX ? PAR_MAX : (int)n;
 }
 
+/* the contact options' names, in their enums' order (sim.h): what the
+** constructor accepts and what sim.<option> reads back */
+static const char *const remapopt[] = {"auto", "hold", "free", NULL};
+static const char *const gapopt[] = {"touch", "step", NULL};
+static const char *const wallopt[] = {"node", "patch", "couple", "penalty", "spring", NULL};
+static const char *const bodyopt[] = {"node", "patch", NULL};
+static const char *const releaseopt[] = {"open", "contact", NULL};
+static const char *const tractionopt[] = {"mixture", "fit", NULL};
+static const char *const normalsopt[] = {"mass", "volume", "maxvolume", "plane", NULL};
+
 int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
       "update", "transfer", "flip", "cfl", "dt", "t_end", "gravity", "sides",
@@ -287,14 +297,6 @@ int lsim_new(lua_State *L) {
       "xpic", "bond_release", "bond_traction", "bond_length", "bond_energy", "dim",
       NULL};
   static const char *const fieldsopt[] = {"body", "single", NULL};
-  static const char *const remapopt[] = {"auto", "hold", "free", NULL};
-  static const char *const gapopt[] = {"touch", "step", NULL};
-  static const char *const wallopt[] = {"node", "patch", "couple", "penalty", "spring", NULL};
-  static const char *const bodyopt[] = {"node", "patch", NULL};
-  static const char *const releaseopt[] = {"open", "contact", NULL};
-  static const char *const tractionopt[] = {"mixture", "fit", NULL};
-  static const char *const normalsopt[] = {"mass", "volume", "maxvolume",
-                                             "plane", NULL};
   const char *what = "sim";
   double lo[DIM], hi[DIM], h, nodes, bytes;
   int periodic[NSIDES] = {0}, pdim[DIM], shape, ppc, k, d, sidx;
@@ -1110,12 +1112,26 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "reacted") == 0) lua_pushnumber(L, react_mean(s));
   else if (strcmp(k, "reaction_substeps") == 0) lua_pushinteger(L, s->react_nsub);
   else if (strcmp(k, "transfer") == 0) lua_pushstring(L, transfer_names[s->cfg.transfer]);
+  /* the contact options as the scene set them (or their defaults) */
+  else if (strcmp(k, "wall_contact") == 0) lua_pushstring(L, wallopt[s->cfg.wall_rule]);
+  else if (strcmp(k, "body_contact") == 0) lua_pushstring(L, bodyopt[s->cfg.body_rule]);
+  else if (strcmp(k, "normals") == 0) lua_pushstring(L, normalsopt[s->cfg.normals]);
+  else if (strcmp(k, "normal_window") == 0) lua_pushinteger(L, s->cfg.normal_window);
+  else if (strcmp(k, "normal_patch") == 0) lua_pushboolean(L, s->cfg.normal_patch);
+  else if (strcmp(k, "contact_gap") == 0) lua_pushstring(L, gapopt[s->cfg.gap_step ? 1 : 0]);
+  else if (strcmp(k, "separation") == 0) lua_pushboolean(L, s->cfg.gap_check);
+  else if (strcmp(k, "wall_remap") == 0) lua_pushstring(L, remapopt[s->cfg.wall_remap]);
+  else if (strcmp(k, "bond_traction") == 0) lua_pushstring(L, tractionopt[s->cfg.bond_fit ? 1 : 0]);
+  else if (strcmp(k, "bond_length") == 0) lua_pushnumber(L, s->cfg.bond_length);
+  else if (strcmp(k, "bond_release") == 0) lua_pushstring(L, releaseopt[s->cfg.release]);
   else {
     static const char *const fields[] = {
         "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "wall_advice", "cell",
         "dim", "flip", "cfl", "friction", "bond_energy", "removed", "threads", "shared_nodes",
         "memory", "outdir", "update", "shape", "transfer", "ignition_time",
-        "ignition", "reaction_tol", "reacted", "reaction_substeps", NULL};
+        "ignition", "reaction_tol", "reacted", "reaction_substeps", "wall_contact",
+        "body_contact", "normals", "normal_window", "normal_patch", "contact_gap",
+        "separation", "wall_remap", "bond_traction", "bond_length", "bond_release", NULL};
     luaL_getmetafield(L, 1, "methods");
     if (lua_getfield(L, -1, k) == LUA_TNIL) chk_nokey(L, "sim", k, -2, fields);
   }

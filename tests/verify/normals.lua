@@ -455,3 +455,32 @@ do
   V.info(string.format("B-splines, 15 degrees, 8 cells: within 3 %% (the goal): %s",
     e["15/8"] <= 0.03 and "met" or "NOT met"), e["15/8"])
 end
+
+-- The contact options read back from the simulation (sim.wall_contact
+-- ...): a script can say which rules a run used.  The defaults, then
+-- every option set; in 3-D too.
+V.case "the contact options read back"
+do
+  local function opts(s)
+    return table.concat({s.wall_contact, s.body_contact, s.normals, tostring(s.normal_window),
+      tostring(s.normal_patch), s.contact_gap, tostring(s.separation), s.wall_remap,
+      s.bond_traction, tostring(s.bond_length), s.bond_release}, " ")
+  end
+  local dom = {x = {0, 1}, y = {0, 1}}
+  local d = mvmpm.sim {domain = dom, cell = 0.1}
+  V.holds("defaults: " .. opts(d),
+    opts(d) == "node node mass 0 false touch true auto mixture 0.0 open")
+  local s = mvmpm.sim {domain = dom, cell = 0.1, wall_contact = "patch", body_contact = "patch",
+    normals = "plane", normal_window = 4, normal_patch = true, contact_gap = "step",
+    wall_remap = "hold", bond_traction = "fit", bond_length = 0.2, bond_release = "contact",
+    contact = {separation = false}}
+  V.holds("as set: " .. opts(s),
+    opts(s) == "patch patch plane 4 true step false hold fit 0.2 contact")
+  s:contact {separation = true}
+  V.holds("separation as sim:contact last set it", s.separation == true)
+  local t = mvmpm.sim {dim = 3, domain = {x = {0, 1}, y = {0, 1}, z = {0, 1}}, cell = 0.25,
+    wall_contact = "spring", normals = "maxvolume"}
+  V.holds("3-D: " .. t.wall_contact .. " " .. t.normals,
+    t.wall_contact == "spring" and t.normals == "maxvolume" and t.dim == 3)
+  mvmpm.sim {domain = dom, cell = 0.1} -- the module back in 2-D
+end

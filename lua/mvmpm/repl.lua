@@ -12,6 +12,7 @@ sim:snapshot(path)   write an HDF5 snapshot now (a relative path: from the curre
 sim:temperature(T)   impose a uniform temperature (a number or function(t)); sim:temperature() reads it
 sim:render{file = "x.png", by = "pressure"}   a picture now (by body, pressure, sdiff, speed, a field), in the output directory; returns the path
 sim.t sim.dt sim.steps sim.n   time, step size, step count, particle count
+sim.shape sim.update sim.transfer sim.wall_contact sim.body_contact sim.normals sim.bond_traction   the scheme and contact rules in use
 sim.flip = f  sim.cfl = c  sim.dt = d  sim.friction = mu   change settings between steps
 show(v)              print a value as the prompt does (tables sorted, one level)
 Ctrl-C stops running steps; Ctrl-D leaves.]]

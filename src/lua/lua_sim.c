@@ -1118,10 +1118,10 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "normals") == 0) lua_pushstring(L, normalsopt[s->cfg.normals]);
   else if (strcmp(k, "normal_window") == 0) lua_pushinteger(L, s->cfg.normal_window);
   else if (strcmp(k, "normal_patch") == 0) lua_pushboolean(L, s->cfg.normal_patch);
-  else if (strcmp(k, "contact_gap") == 0) lua_pushstring(L, gapopt[s->cfg.gap_step ? 1 : 0]);
+  else if (strcmp(k, "contact_gap") == 0) lua_pushstring(L, gapopt[s->cfg.gap_step]);
   else if (strcmp(k, "separation") == 0) lua_pushboolean(L, s->cfg.gap_check);
   else if (strcmp(k, "wall_remap") == 0) lua_pushstring(L, remapopt[s->cfg.wall_remap]);
-  else if (strcmp(k, "bond_traction") == 0) lua_pushstring(L, tractionopt[s->cfg.bond_fit ? 1 : 0]);
+  else if (strcmp(k, "bond_traction") == 0) lua_pushstring(L, tractionopt[s->cfg.bond_fit]);
   else if (strcmp(k, "bond_length") == 0) lua_pushnumber(L, s->cfg.bond_length);
   else if (strcmp(k, "bond_release") == 0) lua_pushstring(L, releaseopt[s->cfg.release]);
   else {

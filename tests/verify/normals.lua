@@ -482,5 +482,4 @@ do
     wall_contact = "spring", normals = "maxvolume"}
   V.holds("3-D: " .. t.wall_contact .. " " .. t.normals,
     t.wall_contact == "spring" and t.normals == "maxvolume" and t.dim == 3)
-  mvmpm.sim {domain = dom, cell = 0.1} -- the module back in 2-D
 end

@@ -84,7 +84,7 @@ double g2p_affine_energy(const sim *s) {
 
 /* the sums of one chunk of particles (par.h), kept in s->work.red */
 typedef struct sums {
-  double ke, mom[DIM], am[3], v2max, pe, loss;
+  double ke, mom[DIM], am[3], v2max, pe, loss, wrap[DIM];
   size_t out, held;
 } sums;
 _Static_assert(sizeof(sums) <= SIM_RED_BYTES, "sums fit SIM_RED_BYTES");
@@ -127,8 +127,13 @@ STENCIL_INLINE void settle(const box *bx, particles *ps, size_t i, sums *u) {
     double x = ps->x[d][i], r;
     if (bx->periodic[d]) {
       double L = bx->hi[d] - bx->lo[d];
-      if (x >= bx->hi[d]) x -= L;
-      else if (x < bx->lo[d]) x += L;
+      if (x >= bx->hi[d]) {
+        x -= L;
+        u->wrap[d] += m * L;
+      } else if (x < bx->lo[d]) {
+        x += L;
+        u->wrap[d] -= m * L;
+      }
       ps->x[d][i] = x;
     } else if (bx->anyhold) {
       /* a penalty wall's spring too soft for the impact: the particle
@@ -453,13 +458,15 @@ static void finish(sim *s) {
     for (d = 0; d < DIM; d++) u.mom[d] += red[c].mom[d];
     for (d = 0; d < 3; d++) u.am[d] += red[c].am[d];
     u.pe += red[c].pe;
+    for (d = 0; d < DIM; d++) u.wrap[d] += red[c].wrap[d];
     u.out += red[c].out;
     u.held += red[c].held;
     u.loss += red[c].loss;
     if (red[c].v2max > u.v2max) u.v2max = red[c].v2max;
   }
   s->e.kinetic = u.ke;
-  s->e.potential = u.pe;
+  for (d = 0; d < DIM; d++) s->e.wrap[d] += u.wrap[d];
+  s->e.potential = sim_potential(s, u.pe);
   s->e.wall_spring = wall_penalty_energy(s) + wall_spring_energy(s); /* at the moved positions */
   for (d = 0; d < DIM; d++) s->e.mom[d] = u.mom[d];
   for (d = 0; d < 3; d++) s->e.angmom[d] = u.am[d];

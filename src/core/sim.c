@@ -464,7 +464,7 @@ void sim_measure(sim *s) {
   }
   s->e.kinetic = ke + g2p_affine_energy(s);
   s->e.strain = se;
-  s->e.potential = pe;
+  s->e.potential = sim_potential(s, pe);
   s->e.wall_spring = wall_penalty_energy(s) + wall_spring_energy(s);
   for (d = 0; d < 3; d++) s->e.angmom[d] = am[d];
   s->vmax = sqrt(v2max);
@@ -488,6 +488,12 @@ int sim_wall_hold(const sim *s) {
   for (d = 0; d < DIM; d++)
     if (cfg->gravity[d] != 0) return 1;
   return 0;
+}
+
+double sim_potential(const sim *s, double pe) {
+  int d;
+  for (d = 0; d < DIM; d++) pe -= s->cfg.gravity[d] * s->e.wrap[d];
+  return pe;
 }
 
 double sim_total(const sim *s) {

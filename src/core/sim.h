@@ -100,7 +100,13 @@ typedef struct pairlaw { int32_t a, b; double mu, bond; } pairlaw;
 /* energy and momentum, updated every step */
 typedef struct sim_energy {
   double kinetic, strain;
-  double potential;  /* of gravity, -sum m g.x: zero without gravity */
+  double potential;  /* of gravity, -sum m g.x: zero without gravity; x
+                     ** unwrapped (wrap below) */
+  double wrap[DIM];  /* sum m (x - x_wrapped) over every periodic wrap of
+                     ** a particle (g2p.c): what the potential adds back, so
+                     ** that with gravity along a periodic axis it stays
+                     ** gravity's work and material falling through the
+                     ** seam does not jump it by m g L */
   double lag;        /* -dt/2 sum V sigma:D: see sim_total */
   double wall_spring; /* stored in the walls' springs (wall_penalty.c) */
   double friction;   /* work dissipated by friction (walls + contacts) */
@@ -364,6 +370,9 @@ const char *sim_advice(const sim *s);
 const char *sim_wall_advice(const sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
+/* gravity's potential from pe = -sum m g.x over the wrapped positions:
+** plus what the periodic wraps took from it (sim_energy.wrap) */
+double sim_potential(const sim *s, double pe);
 /* total energy, kinetic + strain + lag.  Velocities and stresses are a
 ** half step apart in the explicit update (as in symplectic Euler), so
 ** kinetic + strain oscillates by O(omega dt) even when nothing is lost;

@@ -246,6 +246,13 @@ static void visit_sim(ckv *v, sim *s) {
   vreal_opt(v, "e.latent", &e->latent, 0);
   vreal_opt(v, "t_ignition", &s->t_ignition, INFINITY);
   vreal_opt(v, "e.potential0", &e->potential0, e->potential);
+  { /* newer than the format too: a checkpoint without it wrapped nothing */
+    int d;
+    for (d = 0; d < DIM; d++) {
+      snprintf(nm, sizeof nm, "e.wrap.%c", "xyz"[d]);
+      vreal_opt(v, nm, &e->wrap[d], 0);
+    }
+  }
   vvec(v, "e.", "mom", e->mom, DIM);
   if (DIM == 2) vreal(v, "e.angmom", &e->angmom[2]);
   else vvec(v, "e.", "angmom", e->angmom, 3);

@@ -118,4 +118,28 @@ cp -r sfull spiece
 ok $? "restart in the impact"
 cmp -s sfull/diagnostics.csv spiece/diagnostics.csv
 ok $? "the diagnostics (the springs' energy among them) are the same" "$(tail -1 sfull/diagnostics.csv | cut -c1-40)"
+
+# a body sliding down a periodic incline keeps the wraps' part of its
+# potential (sim_energy.wrap) in the checkpoint: continued from t = 2,
+# after it went through the seam, the run is the uninterrupted one
+cat >chute.lua <<'LUA'
+local mvmpm = require "mvmpm"
+local th = math.rad(30)
+local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 0.6}}, cell = 0.05, t_end = 3,
+  gravity = {math.sin(th), -math.cos(th)},
+  sides = {left = "periodic", right = "periodic", bottom = "wall", top = "wall"}}
+sim:body {shape = mvmpm.disk {center = {0.5, 0.2}, radius = 0.2},
+          material = mvmpm.elastic {K = 100, G = 50, density = 1}}
+sim:output {every = 1, csv_every = 10}
+return sim
+LUA
+"$bin" run chute.lua --out pfull --checkpoint-every 1 --quiet
+ok $? "disc on a periodic incline with checkpoints"
+mkdir ppiece && cp pfull/checkpoint_000002.h5 pfull/particles.xmf ppiece/ &&
+  head -n "$(awk -F, '$2 != "" && $1 ~ /^[0-9]+$/ && $2 + 0 <= 2.0000001 {n = NR} END {print n}' pfull/diagnostics.csv)" \
+    pfull/diagnostics.csv >ppiece/diagnostics.csv.part
+"$bin" run --restart ppiece/checkpoint_000002.h5 --quiet >/dev/null 2>&1
+ok $? "restart after the seam"
+cmp -s pfull/diagnostics.csv ppiece/diagnostics.csv
+ok $? "the diagnostics (the potential and the residual among them) are the same" "$(tail -1 pfull/diagnostics.csv | cut -c1-40)"
 finish

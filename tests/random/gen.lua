@@ -4,9 +4,12 @@
 -- random velocities, frictions and bonds, sometimes a binder filling the
 -- rest, sometimes gravity), which runs a few hundred steps.  What must
 -- hold: nothing crashes (the sanitizers watch in make test SAN=1), no NaN
--- reaches the energies, and a run that stops, stops with the engine's own
--- clear message (a crushed particle; every particle gone through free
--- sides), never anything else.
+-- reaches the energies, no run makes energy beyond half its budget's
+-- scale, and a run that stops, stops with the engine's own clear message
+-- (a crushed particle; every particle gone through free sides), never
+-- anything else.  Half the seeds also draw the contact and transfer
+-- options (wall and body rules, normals, the separation check, the bond
+-- traction, XPIC, USAVG) from a stream of their own.
 --
 --   ./mvmpm test tests/random/gen.lua            (seeds 1..20 by default)
 --   SEEDS=1-500 STEPS=300 ./mvmpm test tests/random/gen.lua   (make random)
@@ -27,6 +30,37 @@ end
 
 local function pick(r, t) return t[math.floor(r(0, #t)) + 1] end
 
+-- The contact and transfer options, drawn from a stream of their own so
+-- that the scene a seed made before they were drawn is the same; each
+-- within what the engine documents as allowed with the rest of the scene
+-- (docs/lua-api.md): the penalty and spring walls make the scene's walls
+-- frictionless and its transfer pure FLIP, which is all they accept.
+local function options(r, cfg)
+  if r() < 0.5 then return end -- half the scenes keep the defaults
+  if r() < 0.2 then cfg.transfer, cfg.flip, cfg.xpic = "xpic", nil, pick(r, {2, 3}) end
+  if r() < 0.25 then cfg.update = "usavg" end
+  cfg.wall_contact = pick(r, {"node", "patch", "couple", "penalty", "spring"})
+  if cfg.wall_contact == "penalty" or cfg.wall_contact == "spring" then
+    -- frictionless walls under pure FLIP: what these rules accept
+    for _, sd in pairs(cfg.sides) do
+      if type(sd) == "table" then sd.friction = 0 end
+    end
+    cfg.transfer, cfg.flip, cfg.xpic = "flip", 1, nil
+    cfg.wall_stiffness = pick(r, {0.5, 1, 2})
+    if cfg.wall_contact == "spring" then cfg.wall_band = pick(r, {0, 1, 2, 4}) end
+  end
+  cfg.body_contact = pick(r, {"node", "patch"})
+  cfg.normals = pick(r, {"mass", "volume", "maxvolume", "plane"})
+  cfg.normal_window = pick(r, {0, 0, 2, 4})
+  cfg.normal_patch = r() < 0.3
+  cfg.contact_gap = pick(r, {"touch", "step"})
+  cfg.contact.separation = r() < 0.85
+  cfg.wall_remap = pick(r, {"auto", "hold", "free"})
+  cfg.bond_traction = pick(r, {"mixture", "fit"})
+  if cfg.bond_traction == "fit" and r() < 0.5 then cfg.bond_length = r(0, 0.2) end
+  cfg.bond_release = pick(r, {"open", "contact"})
+end
+
 local function scene(seed)
   local r = rng(seed)
   local cells = pick(r, {8, 10, 12, 16})
@@ -38,12 +72,14 @@ local function scene(seed)
   local sides = {left = px and "periodic" or wall(), bottom = py and "periodic" or wall()}
   sides.right = px and "periodic" or wall()
   sides.top = py and "periodic" or wall()
-  local sim = mvmpm.sim {domain = {x = {0, W}, y = {0, H}}, cell = 1 / cells,
+  local cfg = {domain = {x = {0, W}, y = {0, H}}, cell = 1 / cells,
     ppc = pick(r, {1, 2, 2, 3}), shape = shape, transfer = transfer,
     update = r() < 0.2 and "usl" or "musl", flip = transfer == "flip" and pick(r, {1, 0.99, 0.9}) or nil,
     cfl = pick(r, {0.1, 0.25, 0.4}), sides = sides, t_end = 1e9,
     gravity = r() < 0.3 and {0, -r(0.1, 2)} or nil,
     contact = {friction = pick(r, {0, 0.1, 0.3, "stick"})}}
+  options(rng(seed + 0x5EED), cfg)
+  local sim = mvmpm.sim(cfg)
   local function material()
     local K, G, rho = r(0.5, 5), r(0.2, 2), r(0.5, 3)
     local k = r()
@@ -82,16 +118,28 @@ local ran, stopped, bad = 0, 0, {}
 for seed = first, last do
   local ok, sim = pcall(scene, seed)
   if ok and sim.n > 0 then
-    local nan = false
+    local nan, made = false, -math.huge
     local ok2, err = pcall(function()
       for _ = 1, steps // 10 do
         sim:step(10)
         local e = sim:energy()
         if e.total ~= e.total or e.kinetic ~= e.kinetic then nan = true end
+        made = math.max(made, -e.residual / e.scale)
       end
     end)
     ran = ran + 1
     if nan then bad[#bad + 1] = string.format("seed %d: NaN in the energies", seed) end
+    -- energy made beyond half the budget's scale (a negative residual:
+    -- more energy than went in) is a blow-up, whatever the scheme; the
+    -- largest over seeds 1-1500 was 0.20 of the scale.  Gravity along a
+    -- periodic axis made 2,000 times the scale before the potential was
+    -- taken over the unwrapped positions (tests/verify/periodic_gravity.lua)
+    -- (linear hats under USL, which the engine warns crush particles, are
+    -- not held to it: seed 996 there stores 5 in strain in one step)
+    local unstable = sim.advice and sim.advice:find("crush", 1, true)
+    if ok2 and made > 0.5 and not unstable then
+      bad[#bad + 1] = string.format("seed %d: energy made, %.3g of the budget's scale", seed, made)
+    end
     if not ok2 then
       stopped = stopped + 1
       -- the engine's own messages: a crushed particle or the like
@@ -106,4 +154,5 @@ for seed = first, last do
 end
 V.info("scenes run", ran)
 V.info("runs stopped by the engine (crushed, or all particles left)", stopped)
-V.holds("every run kept its energies finite or stopped with the engine's message", #bad == 0, #bad, bad[1])
+V.holds("every run kept its energies finite and made no energy beyond half its scale, or stopped with the engine's message",
+        #bad == 0, #bad, bad[1])

@@ -272,11 +272,13 @@ fuzz:
 build-fuzz/fuzz_scene: tests/fuzz/fuzz_scene.c $(LIBOBJ)
 	$(CC) $(CFLAGS) -fsanitize=fuzzer $(INC_app) -o $@ $< $(LIBOBJ) $(LDLIBS)
 
-# many random scenes under the sanitizers (make test runs 20 seeds)
+# many random scenes under the sanitizers (make test runs 20 2-D seeds
+# and 4 3-D ones)
 RANDOM_SEEDS ?= 1-500
+RANDOM_SEEDS3 ?= 1-100
 random:
 	@$(MAKE) --no-print-directory SAN=1 build-san/mvmpm
-	SEEDS=$(RANDOM_SEEDS) ./build-san/mvmpm test tests/random/gen.lua
+	SEEDS=$(RANDOM_SEEDS) SEEDS3=$(RANDOM_SEEDS3) ./build-san/mvmpm test tests/random/gen.lua
 
 # the hard-case suite alone (it is part of make test)
 hard: $(BIN)

@@ -504,13 +504,13 @@ double sim_residual(const sim *s) {
   const sim_energy *e = &s->e;
   return e->initial + e->boundary + e->thermal - e->friction - e->plastic -
          e->viscous - e->settled - e->transfer - e->impact - e->bonding -
-         e->cohesion - sim_total(s);
+         e->cohesion - e->removed - sim_total(s);
 }
 
 double sim_scale(const sim *s) {
   const sim_energy *e = &s->e;
   return (e->initial - e->potential0) + fabs(e->boundary) + fabs(e->thermal) +
-         fabs(e->potential - e->potential0) + e->settled;
+         fabs(e->potential - e->potential0) + e->settled + fabs(e->removed);
 }
 
 double sim_stop(sim *s) {
@@ -606,6 +606,36 @@ int constitutive(sim *s, double dt) {
   return 0;
 }
 
+/* What particle i takes with it as it leaves: its kinetic, strain and
+** potential energy, taken out of the step's sums (which g2p and the
+** constitutive pass made with it) and booked as removed; with heat, its
+** thermal energy as heat that left through the boundary.  The potential
+** is over its wrapped position, as the sums took it (the wraps' sum
+** e.wrap keeps its part, a constant from then on). */
+static void leave(sim *s, size_t i) {
+  const particles *ps = &s->ps;
+  int32_t mi = s->bmat[ps->body[i]];
+  double m = ps->m[i], ke = 0, pe = 0, se = 0;
+  int d;
+  for (d = 0; d < DIM; d++) {
+    ke += 0.5 * m * ps->v[d][i] * ps->v[d][i];
+    pe -= m * s->cfg.gravity[d] * ps->x[d][i];
+  }
+  if (mi >= 0) {
+    se = s->mats[mi].model->energy(&s->mats[mi], ps, i);
+    if (s->heat && s->ftemp >= 0) {
+      const double *T = particles_comp(ps, s->ftemp, 0);
+      double q = m * s->mats[mi].cv * T[i];
+      s->e.heat_boundary -= q;
+      s->e.heat_thermal -= q;
+    }
+  }
+  s->e.kinetic -= ke;
+  s->e.potential -= pe;
+  s->e.strain -= se;
+  s->e.removed += ke + pe + se;
+}
+
 /* particles that left the domain are dropped (documented behaviour) */
 static void housekeeping(sim *s) {
   const sim_cfg *cfg = &s->cfg;
@@ -614,7 +644,8 @@ static void housekeeping(sim *s) {
   if (s->nout) {
     unsigned char *keep = ps->scratch; /* cap bytes are enough */
     size_t i;
-    for (i = 0; i < ps->n; i++) keep[i] = ps->cell[i] >= 0;
+    for (i = 0; i < ps->n; i++)
+      if (!(keep[i] = ps->cell[i] >= 0)) leave(s, i);
     /* compact works array by array; keep must not be one of them */
     s->nremoved += ps->n - particles_compact(ps, keep);
     s->nout = 0;

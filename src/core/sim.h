@@ -116,6 +116,10 @@ typedef struct sim_energy {
   double thermal;    /* work of the thermal strain on the stress (thermal.c):
                      ** what heating or cooling adds to the strain energy */
   double settled;    /* kinetic energy taken out by sim_stop (settling) */
+  double removed;    /* kinetic + strain + potential of the particles that
+                     ** left through free sides, as they left (sim.c
+                     ** housekeeping): an outflow, so that the budget of
+                     ** an open scene (a hopper, a chute's outlet) closes */
   double chemical;   /* heat the reaction released, sum m Q d lambda
                      ** (react.c): an input to the heat, not to the
                      ** mechanical budget */
@@ -380,7 +384,8 @@ double sim_potential(const sim *s, double pe);
 ** is exact for a linear oscillator) */
 double sim_total(const sim *s);
 /* energy budget residual: initial + boundary + thermal - friction -
-** plastic - viscous - transfer - total; zero up to the error of the
+** plastic - viscous - settled - transfer - impact - bonding - cohesion -
+** removed - total; zero up to the error of the
 ** step */
 double sim_residual(const sim *s);
 /* with heat (heat.h): the heat the budget booked into the particles
@@ -389,7 +394,8 @@ double sim_residual(const sim *s);
 double sim_heat_residual(const sim *s);
 /* the budget of mechanical and thermal energy together: initial +
 ** boundary + thermal work + heat_source + heat_boundary - total -
-** thermal energy - cold work - heat_wall - settled - transfer - impact;
+** thermal energy - cold work - heat_wall - settled - transfer - impact
+** - removed;
 ** sim_residual when heat is off */
 double sim_residual_all(const sim *s);
 /* the budget's scale, which no choice of origin changes (the potential's

@@ -242,6 +242,7 @@ static void visit_sim(ckv *v, sim *s) {
   /* newer than the format: a checkpoint without them settled nothing,
   ** and its potential's start is taken as where it was then */
   vreal_opt(v, "e.settled", &e->settled, 0);
+  vreal_opt(v, "e.removed", &e->removed, 0);
   vreal_opt(v, "e.chemical", &e->chemical, 0);
   vreal_opt(v, "e.latent", &e->latent, 0);
   vreal_opt(v, "t_ignition", &s->t_ignition, INFINITY);

@@ -47,15 +47,50 @@ int out_csv_row(csvout *c, const double *vals, char *err, size_t errlen) {
   return 0;
 }
 
-int out_csv_resume(csvout *c, const char *path, long length, int ncol,
-                   char *err, size_t errlen) {
+/* whether the header row of file (its first line that is not a "# "
+** comment) names cols; -1 when the file cannot be read (the caller's
+** own checks then say why), else 1 or 0 with the file's column count */
+static int header_is(const char *file, const char *const *cols, int ncol,
+                     int *have) {
+  FILE *f = fopen(file, "r");
+  int ch = '\n', k = 0, same = 1, at_start = 1, comment = 0;
+  const char *want = ncol > 0 ? cols[0] : "";
+  if (!f) return -1;
+  *have = 1;
+  while ((ch = fgetc(f)) != EOF) {
+    if (at_start) comment = ch == '#';
+    at_start = ch == '\n';
+    if (comment) continue;
+    if (ch == '\n') break;
+    if (ch == ',') { /* the next name */
+      (*have)++;
+      if (*want || ++k >= ncol) same = 0;
+      else want = cols[k];
+    } else if (same && *want == ch) want++;
+    else same = 0;
+  }
+  fclose(f);
+  return same && !*want && k == ncol - 1;
+}
+
+int out_csv_resume(csvout *c, const char *path, long length,
+                   const char *const *cols, int ncol, char *err,
+                   size_t errlen) {
   char part[1040];
   struct stat st;
-  int fd;
+  int fd, have = 0;
   memset(c, 0, sizeof *c);
   snprintf(c->path, sizeof c->path, "%s", path);
   snprintf(part, sizeof part, "%s.part", path);
   c->ncol = ncol;
+  if (header_is(lstat(part, &st) == 0 ? part : path, cols, ncol, &have) == 0) {
+    snprintf(err, errlen, "%s: the diagnostics table has other columns "
+             "(%d) than this version writes (%d): it was made by another "
+             "version, and rows appended to it would not match its header; "
+             "continue the run with the version that made it, or run it "
+             "again", lstat(part, &st) == 0 ? part : path, have, ncol);
+    return -1;
+  }
   if (lstat(part, &st) != 0) {
     if (errno != ENOENT || lstat(path, &st) != 0 || rename(path, part) != 0) {
       snprintf(err, errlen, "%s: cannot continue the diagnostics table: "

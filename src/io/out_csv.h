@@ -25,9 +25,13 @@ int out_csv_open(csvout *c, const char *path, const char *preamble,
 /* continue a table a checkpoint recorded at `length` bytes: the rows a
 ** killed run wrote after it are cut off, and rows are appended.  The
 ** table is "<path>.part", or path itself when the run had finished
-** (renamed back to .part).  0, or -1 with err (missing, or shorter). */
-int out_csv_resume(csvout *c, const char *path, long length, int ncol,
-                   char *err, size_t errlen);
+** (renamed back to .part).  Its header row must name cols (the table
+** of another version has other columns: appending to it would mix
+** them).  0, or -1 with err (missing, shorter, other columns), the files
+** left as they were. */
+int out_csv_resume(csvout *c, const char *path, long length,
+                   const char *const *cols, int ncol, char *err,
+                   size_t errlen);
 int out_csv_row(csvout *c, const double *vals, char *err, size_t errlen);
 /* flush to disk (fsync); the length in bytes, -1 when no table is open,
 ** -2 with err when it fails */

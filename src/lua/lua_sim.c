@@ -809,6 +809,7 @@ static int lenergy(lua_State *L) {
   setnum(L, "boundary_work", s->e.boundary);
   setnum(L, "thermal_work", s->e.thermal);
   setnum(L, "settled", s->e.settled);
+  setnum(L, "removed", s->e.removed);
   setnum(L, "chemical", s->e.chemical);
   setnum(L, "latent", s->e.latent);
   setnum(L, "transfer", s->e.transfer);

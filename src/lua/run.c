@@ -114,7 +114,7 @@ int run_claim_outdir(const char *dir, int overwrite, char *err,
 /* every term of the budget (docs/algorithm.md) is a column: total =
 ** kinetic + strain + potential + lag, residual = initial + boundary_work
 ** + thermal_work - dissipated - plastic - viscous - settled - transfer
-** - impact - bonding - cohesion - total, and
+** - impact - bonding - cohesion - removed - total, and
 ** scale (sim_scale) the size it is measured against */
 static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     "dissipated", "plastic", "viscous", "boundary_work", "thermal_work",
@@ -125,8 +125,9 @@ static const char *const cols[] = {"step", "t", "dt", "kinetic", "strain",
     ** of sim:output{hotspots =} (react.h, lua_hotspot.c) */
     "chemical", "reacted", "ignition_time", "hotspots",
     "hotspot_area_fraction",
-    /* the cohesive law's work of separation (sim.bond_energy) */
-    "cohesion",
+    /* the cohesive law's work of separation (sim.bond_energy); what
+    ** particles leaving through free sides took (sim.c) */
+    "cohesion", "removed",
     /* scenes with heat only (heat.h): the heat the sources put in, what
     ** walls and held bodies exchanged, the thermal energy the particles
     ** hold, and the two residuals */
@@ -171,13 +172,13 @@ static void csv_row(lua_State *L, lsim *ls) {
   v[28] = s->e.chemical; v[29] = react_mean(s);
   v[30] = s->t_ignition < INFINITY ? s->t_ignition : -1;
   lsim_hotspot_row(L, ls, &v[31], &v[32]);
-  v[33] = s->e.cohesion;
+  v[33] = s->e.cohesion; v[34] = s->e.removed;
   if (s->heat) {
-    v[34] = s->e.heat_friction; v[35] = s->e.heat_plastic;
-    v[36] = s->e.heat_viscous; v[37] = s->e.heat_source;
-    v[38] = s->e.heat_wall; v[39] = s->e.cold; v[40] = s->e.heat_boundary;
-    v[41] = s->e.heat_thermal; v[42] = sim_heat_residual(s);
-    v[43] = sim_residual_all(s);
+    v[35] = s->e.heat_friction; v[36] = s->e.heat_plastic;
+    v[37] = s->e.heat_viscous; v[38] = s->e.heat_source;
+    v[39] = s->e.heat_wall; v[40] = s->e.cold; v[41] = s->e.heat_boundary;
+    v[42] = s->e.heat_thermal; v[43] = sim_heat_residual(s);
+    v[44] = sim_residual_all(s);
   }
   if (NCOLS_3D) { /* the 3-D columns go before the heat's */
     double w[NCOLS_ALL + 3];
@@ -349,7 +350,10 @@ static void out_resume(lua_State *L, lsim *ls) {
   if (ls->csv_resume >= 0) {
     snprintf(path, sizeof path, "%s/diagnostics.csv", ls->outdir);
     csv_check(L, path);
-    if (out_csv_resume(&ls->csv, path, ls->csv_resume, NCOLS, err, sizeof err))
+    const char *names[NCOLS_ALL + 3];
+    csv_cols(names);
+    if (out_csv_resume(&ls->csv, path, ls->csv_resume, names, NCOLS, err,
+                       sizeof err))
       luaL_error(L, "%s", err);
   }
   ls->csv_open = 1;

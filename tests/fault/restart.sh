@@ -142,4 +142,13 @@ mkdir ppiece && cp pfull/checkpoint_000002.h5 pfull/particles.xmf ppiece/ &&
 ok $? "restart after the seam"
 cmp -s pfull/diagnostics.csv ppiece/diagnostics.csv
 ok $? "the diagnostics (the potential and the residual among them) are the same" "$(tail -1 pfull/diagnostics.csv | cut -c1-40)"
+# a table with other columns (another version's: here its last column
+# taken out of the header) is refused, and nothing is touched
+mkdir pother && cp pfull/checkpoint_000002.h5 pother/ &&
+  sed '/^step,/s/,[a-z_]*$//' pfull/diagnostics.csv >pother/diagnostics.csv &&
+  cp pother/diagnostics.csv before.csv
+"$bin" run --restart pother/checkpoint_000002.h5 --quiet >out.txt 2>&1
+[ $? -eq 1 ] && has out.txt "the diagnostics table has other columns" &&
+  cmp -s before.csv pother/diagnostics.csv && [ ! -e pother/diagnostics.csv.part ]
+ok $? "a table with other columns is refused, left as it was" "$(head -1 out.txt | cut -c1-120)"
 finish

@@ -53,7 +53,7 @@ int out_csv_row(csvout *c, const double *vals, char *err, size_t errlen) {
 static int header_is(const char *file, const char *const *cols, int ncol,
                      int *have) {
   FILE *f = fopen(file, "r");
-  int ch = '\n', k = 0, same = 1, at_start = 1, comment = 0;
+  int ch, k = 0, same = 1, at_start = 1, comment = 0;
   const char *want = ncol > 0 ? cols[0] : "";
   if (!f) return -1;
   *have = 1;
@@ -77,18 +77,21 @@ int out_csv_resume(csvout *c, const char *path, long length,
                    const char *const *cols, int ncol, char *err,
                    size_t errlen) {
   char part[1040];
+  const char *table;
   struct stat st;
   int fd, have = 0;
   memset(c, 0, sizeof *c);
   snprintf(c->path, sizeof c->path, "%s", path);
   snprintf(part, sizeof part, "%s.part", path);
   c->ncol = ncol;
-  if (header_is(lstat(part, &st) == 0 ? part : path, cols, ncol, &have) == 0) {
+  /* before anything is renamed or cut */
+  table = lstat(part, &st) == 0 ? part : path;
+  if (header_is(table, cols, ncol, &have) == 0) {
     snprintf(err, errlen, "%s: the diagnostics table has other columns "
-             "(%d) than this version writes (%d): it was made by another "
-             "version, and rows appended to it would not match its header; "
-             "continue the run with the version that made it, or run it "
-             "again", lstat(part, &st) == 0 ? part : path, have, ncol);
+             "than this version writes (%d in its header, %d written): it "
+             "was made by another version, and rows appended to it would "
+             "not match its header; continue the run with the version that "
+             "made it, or run it again", table, have, ncol);
     return -1;
   }
   if (lstat(part, &st) != 0) {

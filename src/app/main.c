@@ -692,7 +692,9 @@ static int cmd_run(int argc, char **argv) {
       printf("        plastic %.6g  viscous %.6g  thermal work %.6g  settled "
              "%.6g\n", s->e.plastic, s->e.viscous, s->e.thermal,
              s->e.settled);
-    if (s->nremoved) printf("%zu particles left the domain and were removed\n", s->nremoved);
+    if (s->nremoved)
+      printf("%zu particles left the domain and were removed, taking energy "
+             "%.6g (booked as removed)\n", s->nremoved, s->e.removed);
     if (s->nheld)
       printf("%zu particle moves were held at a penalty wall (its spring too "
              "soft for the load: raise wall_stiffness)\n", s->nheld);

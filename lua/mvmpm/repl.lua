@@ -5,7 +5,7 @@
 local text = [[
 sim:step(n)          advance n steps (default 1)
 sim:run(t)           advance to time t (default: the scene's t_end)
-sim:energy()         kinetic, strain, dissipated, plastic, viscous, boundary_work, thermal_work, total, residual, px, py, angmom
+sim:energy()         kinetic, strain, potential, dissipated, plastic, viscous, boundary_work, thermal_work, removed, total, residual, scale, px, py, angmom
 sim:bodies()         the bodies; b:diag(), b:centroid(), b:velocity(), b:omega(), b:mass()
 sim:particles(name)  copy of a particle field (sim:particles() lists them)
 sim:snapshot(path)   write an HDF5 snapshot now (a relative path: from the current directory); returns the path

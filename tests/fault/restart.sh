@@ -91,15 +91,21 @@ LUA
 [ $? -eq 1 ] && has out.txt "state.a[3].fn is a function"
 ok $? "a function in sim:state is refused by its place" "$(head -1 out.txt)"
 
+# piece FULL PIECE CK T: PIECE as FULL's directory stood at checkpoint CK,
+# taken at time T: the checkpoint, the index and the table's rows up to T
+piece() {
+  mkdir "$2" && cp "$1/checkpoint_$3.h5" "$1/particles.xmf" "$2/" &&
+    head -n "$(awk -F, -v t="$4" '$2 != "" && $1 ~ /^[0-9]+$/ && $2 + 0 <= t + 1e-7 {n = NR} END {print n}' \
+      "$1/diagnostics.csv")" "$1/diagnostics.csv" >"$2/diagnostics.csv.part"
+}
+
 # the cohesive law's memory (the particles' cut strength and largest
 # opening) is in the checkpoint: continued from t = 24, halfway through
 # the interface's softening (t = 19 .. 29), the run is the uninterrupted one
 set_coh="--set strength=0.005 --set energy=2.5e-5 --set V0=0.0002 --set t_end=30"
 "$bin" run "$pull" --out cfull $set_coh --checkpoint-every 8 --quiet >/dev/null 2>&1
 ok $? "cohesive pull with checkpoints"
-mkdir cpiece && cp cfull/checkpoint_000003.h5 cfull/particles.xmf cpiece/ &&
-  head -n "$(awk -F, '$2 != "" && $1 ~ /^[0-9]+$/ && $2 + 0 <= 24.0000001 {n = NR} END {print n}' cfull/diagnostics.csv)" \
-    cfull/diagnostics.csv >cpiece/diagnostics.csv.part
+piece cfull cpiece 000003 24
 "$bin" run --restart cpiece/checkpoint_000003.h5 --quiet >/dev/null 2>&1
 ok $? "restart mid-softening"
 cmp -s cfull/diagnostics.csv cpiece/diagnostics.csv
@@ -135,9 +141,7 @@ return sim
 LUA
 "$bin" run chute.lua --out pfull --checkpoint-every 1 --quiet
 ok $? "disc on a periodic incline with checkpoints"
-mkdir ppiece && cp pfull/checkpoint_000002.h5 pfull/particles.xmf ppiece/ &&
-  head -n "$(awk -F, '$2 != "" && $1 ~ /^[0-9]+$/ && $2 + 0 <= 2.0000001 {n = NR} END {print n}' pfull/diagnostics.csv)" \
-    pfull/diagnostics.csv >ppiece/diagnostics.csv.part
+piece pfull ppiece 000002 2
 "$bin" run --restart ppiece/checkpoint_000002.h5 --quiet >/dev/null 2>&1
 ok $? "restart after the seam"
 cmp -s pfull/diagnostics.csv ppiece/diagnostics.csv

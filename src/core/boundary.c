@@ -115,6 +115,22 @@ static int wall_node(sim *s, side *sd, int d, double sign, double m,
   return 1;
 }
 
+/* the field of a node no other field shares (the owner is marked only
+** in scenes with more than one field) */
+static int32_t node_field(const sim *s, int32_t n) {
+  return s->nfield > 1 || s->ndriven ? s->g.owner[n] : 0;
+}
+
+/* A driven body's motion is prescribed: its particles take the drive's
+** velocity whatever the grid does, so a wall does not act on its field.
+** Stopped at a wall it drove into, the field's approach came back at
+** every step, and the wall booked it as impact and friction each time
+** while no energy left the material (a disc driven into a floor: 9.6
+** times the budget's scale made). */
+static int wall_skips(const sim *s, int32_t f) {
+  return s->ndriven && s->fdriven[f] >= 0;
+}
+
 /* the node rule at column j of plane `line` of side k */
 static void wall_column(sim *s, int k, int line, int first, size_t j) {
   const sim_cfg *cfg = &s->cfg;
@@ -132,13 +148,15 @@ static void wall_column(sim *s, int k, int line, int first, size_t j) {
   if (g->m[n] <= s->mcut) return;
   if (gap > 0 && !cfg->gap_step) return;
   if (g->head[n] < 0) {
-    int a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, 0, gap, imp,
-                      g->fi, g->ni);
+    int a;
+    if (wall_skips(s, node_field(s, n))) return;
+    a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, 0, gap, imp,
+                  g->fi, g->ni);
     *act = (unsigned char)a;
     return;
   }
   for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
-    if (g->sm[sl] <= s->mcut) continue;
+    if (g->sm[sl] <= s->mcut || wall_skips(s, g->sfield[sl])) continue;
     if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, 1, gap, imp,
                   g->sfi, g->sni))
       *act = 1;
@@ -197,12 +215,6 @@ static int col_acted(const sim *s, int k, size_t j, int first, int last) {
 ** not), and stopping them alone is a torque against the spin, with the
 ** arm of the flat of the lowest particle row. */
 
-/* the field of a node no other field shares (the owner is marked only
-** in scenes with more than one field) */
-static int32_t node_field(const sim *s, int32_t n) {
-  return s->nfield > 1 || s->ndriven ? s->g.owner[n] : 0;
-}
-
 /* whether field f has mass above the cut at node n; *sl its slot (-1:
 ** the node's dense entry) */
 static int patch_entry(const sim *s, int32_t n, int32_t f, int32_t *sl) {
@@ -227,12 +239,16 @@ static int32_t patch_next_field(const sim *s, int k, const int32_t *cols,
       int32_t n = grid_face_node(g, d, line, (size_t)cols[a]), sl;
       if (g->head[n] < 0) {
         int32_t f = node_field(s, n);
-        if (g->m[n] > s->mcut && f > after && (best < 0 || f < best)) best = f;
+        if (g->m[n] > s->mcut && f > after && (best < 0 || f < best) &&
+            !wall_skips(s, f))
+          best = f;
         continue;
       }
       for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
         int32_t f = g->sfield[sl];
-        if (g->sm[sl] > s->mcut && f > after && (best < 0 || f < best)) best = f;
+        if (g->sm[sl] > s->mcut && f > after && (best < 0 || f < best) &&
+            !wall_skips(s, f))
+          best = f;
       }
     }
   }
@@ -528,7 +544,7 @@ static void patch_deep(sim *s, int k, int first, int last) {
       if (g->m[n] <= s->mcut) continue;
       if (g->head[n] < 0) {
         double dn = sign * (g->q[d][n] - g->m[n] * sd->v[d]);
-        if (!(dn > 0)) continue;
+        if (!(dn > 0) || wall_skips(s, node_field(s, n))) continue;
         g->q[d][n] -= sign * dn;
         wall_impact(s, g->m[n], g->p[d][n], sd->v[d], sd->v[d], -sign * dn,
                     &g->ni[d][n]);
@@ -539,7 +555,7 @@ static void patch_deep(sim *s, int k, int first, int last) {
       }
       for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
         double dn;
-        if (g->sm[sl] <= s->mcut) continue;
+        if (g->sm[sl] <= s->mcut || wall_skips(s, g->sfield[sl])) continue;
         dn = sign * (g->sq[d][sl] - g->sm[sl] * sd->v[d]);
         if (!(dn > 0)) continue;
         g->sq[d][sl] -= sign * dn;

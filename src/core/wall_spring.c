@@ -44,7 +44,7 @@
 **
 ** A column holding two velocity fields (a shared node in it) is left to
 ** the node rule (boundary.c): its compression is per column, not per
-** field.  Serial over the columns: the same bits on any thread count.
+** field; so is a driven body's, which no wall acts on.  Serial over the columns: the same bits on any thread count.
 **
 ** The defect (warned of at load, sim_wall_advice): the compression is
 ** kept per column, a place on the wall, while the material it belongs to
@@ -103,6 +103,8 @@ int wall_spring_column(sim *s, int k, int first, int last, size_t j, double kk) 
     int32_t n = grid_face_node(g, d, line, j);
     if (g->m[n] <= s->mcut) continue;
     if (g->head[n] >= 0) { *dl = 0; return 0; } /* two fields: the node rule */
+    /* a driven body's: the node rule, which leaves it to its drive */
+    if (s->ndriven && s->fdriven[g->owner[n]] >= 0) { *dl = 0; return 0; }
     M += g->m[n];
     P0 += sign * (g->p[d][n] - g->m[n] * sd->v[d]);
     PL += sign * (g->q[d][n] - g->m[n] * sd->v[d]);

@@ -7,9 +7,11 @@
 -- reaches the energies, no run makes energy beyond half its budget's
 -- scale, and a run that stops, stops with the engine's own clear message
 -- (a crushed particle; every particle gone through free sides), never
--- anything else.  Half the seeds also draw the contact and transfer
+-- anything else; with heat, the heat the budget booked is the heat the
+-- particles hold.  Half the seeds also draw the contact and transfer
 -- options (wall and body rules, normals, the separation check, the bond
--- traction, XPIC, USAVG) from a stream of their own.
+-- traction, XPIC, USAVG) from a stream of their own, and a third stream
+-- draws walls sliding along themselves, heat and a driven body.
 --
 --   ./mvmpm test tests/random/gen.lua            (2-D seeds 1..20, 3-D 1..4)
 --   SEEDS=1-500 SEEDS3=1-100 STEPS=300 ./mvmpm test tests/random/gen.lua   (make random)
@@ -97,14 +99,31 @@ local function scene(seed, dim)
     gravity = r() < 0.3 and {0, -r(0.1, 2), d3 and 0 or nil} or nil,
     contact = {friction = pick(r, {0, 0.1, 0.3, "stick"})}}
   options(rng(seed + 0x5EED), cfg)
+  -- walls sliding along themselves, heat, and a driven disc (or ball),
+  -- from a third stream
+  local r3 = rng(seed + 0xABCDEF)
+  if r3() < 0.4 then
+    for _, k in ipairs {"top", "bottom"} do
+      local sd = cfg.sides[k]
+      if type(sd) == "table" then sd.velocity = {r3(-0.3, 0.3), 0, d3 and 0 or nil} end
+    end
+  end
   local sim = mvmpm.sim(cfg)
+  if r3() < 0.4 then sim:heat() end
+  if r3() < 0.4 then
+    local c = {r3(0, W), r3(0, H), d3 and r3(0, D) or nil}
+    pcall(sim.body, sim, {shape = d3 and mvmpm.ball {center = c, radius = 0.15} or mvmpm.disk {center = c, radius = 0.12},
+      material = mvmpm.elastic {K = 2, G = 1, density = 1, cv = 1}, overlap = "skip",
+      driven = {r3(-0.2, 0.2), r3(-0.2, 0.2), d3 and 0 or nil}})
+  end
   local function material()
     local K, G, rho = r(0.5, 5), r(0.2, 2), r(0.5, 3)
     local k = r()
-    if k < 0.4 then return mvmpm.elastic {K = K, G = G, density = rho}
-    elseif k < 0.7 then return mvmpm.plastic {K = K, G = G, density = rho, yield = r(0.01, 0.2), hardening = r(0, 1)}
+    -- cv: what heat, when the scene has it, needs of every material
+    if k < 0.4 then return mvmpm.elastic {K = K, G = G, density = rho, cv = 1}
+    elseif k < 0.7 then return mvmpm.plastic {K = K, G = G, density = rho, yield = r(0.01, 0.2), hardening = r(0, 1), cv = 1}
     else return mvmpm.viscoelastic {K = K, G_inf = G / 2, density = rho,
-      prony = {{G = G / 2, tau = r(0.01, 1)}}} end
+      prony = {{G = G / 2, tau = r(0.01, 1)}}, cv = 1} end
   end
   local n = math.floor(r(1, 7))
   for k = 1, n do
@@ -129,7 +148,7 @@ local function scene(seed, dim)
   end
   if r() < 0.2 then
     pcall(sim.body, sim, {shape = mvmpm.rest(), material = mvmpm.viscoelastic {K = 1, G_inf = 0.05,
-      density = 1, prony = {{G = 0.1, tau = 0.1}}}, bond = r() < 0.5 and 0.02 or nil})
+      density = 1, prony = {{G = 0.1, tau = 0.1}}, cv = 1}, bond = r() < 0.5 and 0.02 or nil})
   end
   return sim
 end
@@ -149,17 +168,24 @@ local function run(dim, spec)
   for seed = first, last do
     local ok, sim = pcall(scene, seed, dim)
     if ok and sim.n > 0 then
-      local nan, made = false, -math.huge
+      local nan, made, heat = false, -math.huge, nil
       local ok2, err = pcall(function()
         for _ = 1, steps // 10 do
           sim:step(10)
           local e = sim:energy()
           if e.total ~= e.total or e.kinetic ~= e.kinetic then nan = true end
           made = math.max(made, -e.residual / e.scale)
+          -- heat: what the budget booked into the particles is what they hold
+          if e.heat_residual and not (math.abs(e.heat_residual) <= 1e-6 *
+              (math.abs(e.heat_friction) + math.abs(e.heat_plastic) + math.abs(e.heat_viscous) +
+               math.abs(e.heat_boundary) + math.abs(e.heat_wall) + 1e-30)) then
+            heat = e.heat_residual
+          end
         end
       end)
       ran = ran + 1
       if nan then bad[#bad + 1] = string.format("seed %d: NaN in the energies", seed) end
+      if heat then bad[#bad + 1] = string.format("seed %d: heat residual %g", seed, heat) end
       -- energy made beyond half the budget's scale (a negative residual:
       -- more energy than went in) is a blow-up, whatever the scheme; the
       -- largest over 2-D seeds 1-1500 was 0.13 of the scale, over 3-D

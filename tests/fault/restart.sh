@@ -98,6 +98,14 @@ piece() {
     head -n "$(awk -F, -v t="$4" '$2 != "" && $1 ~ /^[0-9]+$/ && $2 + 0 <= t + 1e-7 {n = NR} END {print n}' \
       "$1/diagnostics.csv")" "$1/diagnostics.csv" >"$2/diagnostics.csv.part"
 }
+# continued FULL PIECE CK WHEN WHAT: PIECE continued from its checkpoint
+# CK ends with FULL's diagnostics, byte for byte
+continued() {
+  "$bin" run --restart "$2/checkpoint_$3.h5" --quiet >/dev/null 2>&1
+  ok $? "restart $4"
+  cmp -s "$1/diagnostics.csv" "$2/diagnostics.csv"
+  ok $? "the diagnostics ($5 among them) are the same" "$(tail -1 "$1/diagnostics.csv" | cut -c1-40)"
+}
 
 # the cohesive law's memory (the particles' cut strength and largest
 # opening) is in the checkpoint: continued from t = 24, halfway through
@@ -106,10 +114,7 @@ set_coh="--set strength=0.005 --set energy=2.5e-5 --set V0=0.0002 --set t_end=30
 "$bin" run "$pull" --out cfull $set_coh --checkpoint-every 8 --quiet >/dev/null 2>&1
 ok $? "cohesive pull with checkpoints"
 piece cfull cpiece 000003 24
-"$bin" run --restart cpiece/checkpoint_000003.h5 --quiet >/dev/null 2>&1
-ok $? "restart mid-softening"
-cmp -s cfull/diagnostics.csv cpiece/diagnostics.csv
-ok $? "the diagnostics (the work of separation among them) are the same" "$(tail -1 cfull/diagnostics.csv | cut -c1-40)"
+continued cfull cpiece 000003 "mid-softening" "the work of separation"
 
 # spring walls keep each column's compression between steps: continued
 # from t = 5.6, in the middle of the first impact (t = 5.0 .. 6.9), the
@@ -120,10 +125,7 @@ ok $? "bounce on spring walls with checkpoints"
 strings sfull/checkpoint_000002.h5 | grep -q "side.right.dl."
 ok $? "the checkpoint in the impact holds the springs' compression"
 cp -r sfull spiece
-"$bin" run --restart spiece/checkpoint_000002.h5 --quiet >/dev/null 2>&1
-ok $? "restart in the impact"
-cmp -s sfull/diagnostics.csv spiece/diagnostics.csv
-ok $? "the diagnostics (the springs' energy among them) are the same" "$(tail -1 sfull/diagnostics.csv | cut -c1-40)"
+continued sfull spiece 000002 "in the impact" "the springs' energy"
 
 # a body sliding down a periodic incline keeps the wraps' part of its
 # potential (sim_energy.wrap) in the checkpoint: continued from t = 2,
@@ -142,10 +144,7 @@ LUA
 "$bin" run chute.lua --out pfull --checkpoint-every 1 --quiet
 ok $? "disc on a periodic incline with checkpoints"
 piece pfull ppiece 000002 2
-"$bin" run --restart ppiece/checkpoint_000002.h5 --quiet >/dev/null 2>&1
-ok $? "restart after the seam"
-cmp -s pfull/diagnostics.csv ppiece/diagnostics.csv
-ok $? "the diagnostics (the potential and the residual among them) are the same" "$(tail -1 pfull/diagnostics.csv | cut -c1-40)"
+continued pfull ppiece 000002 "after the seam" "the potential and the residual"
 # a table with other columns (another version's: here its last column
 # taken out of the header) is refused, and nothing is touched
 mkdir pother && cp pfull/checkpoint_000002.h5 pother/ &&

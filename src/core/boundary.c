@@ -169,16 +169,28 @@ static void wall_line(sim *s, int k, int line, int first) {
   for (j = 0; j < s->sides[k].next; j++) wall_column(s, k, line, first, j);
 }
 
+typedef int col_fn(const sim *s, int k, size_t j, int first, int last);
+static int patch_find(const sim *s, int k, int first, int last, col_fn *in);
+
+/* the columns holding a spring (wall_spring.c): the patches of springs */
+static int spring_in(const sim *s, int k, size_t j, int first, int last) {
+  (void)first;
+  (void)last;
+  return s->sides[k].dl[j] > 0;
+}
+
 /* the springs' side (wall_spring.c): the node rule where a column holds
-** two fields */
+** two fields or a driven body's */
 static void wall_springs(sim *s, int k, int first, int last) {
-  const double kk = wall_spring_k(s);
+  side *sd = &s->sides[k];
   size_t j;
   int line;
-  for (j = 0; j < s->sides[k].next; j++) {
+  wall_spring_side(s, k, first, last, s->work.wpatch,
+                   patch_find(s, k, first, last, spring_in));
+  for (j = 0; j < sd->next; j++) {
     for (line = first; line <= last; line++)
-      s->sides[k].acted[(size_t)(line - first) * s->sides[k].next + j] = 0;
-    if (!wall_spring_column(s, k, first, last, j, kk))
+      sd->acted[(size_t)(line - first) * sd->next + j] = 0;
+    if (!wall_spring_owns(s, k, j))
       for (line = first; line <= last; line++) wall_column(s, k, line, first, j);
   }
 }
@@ -454,8 +466,6 @@ static int patch_gap(const sim *s, int k, const int32_t *cols, int len) {
     if (s->sides[k].ext[cols[a]] >= 0) return 1;
   return 0;
 }
-
-typedef int col_fn(const sim *s, int k, size_t j, int first, int last);
 
 /* The patches of side k: the columns where `in` holds, joined into
 ** connected sets across the face (a column's neighbours are the next

@@ -64,11 +64,15 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
     s->sides[k].acted = calloc((size_t)(s->g.pad + 1) * s->sides[k].next, 1);
     s->sides[k].hm = calloc((size_t)(s->g.pad + 2) * s->sides[k].next, sizeof(double));
     s->sides[k].dl = calloc(s->sides[k].next, sizeof(double));
-    if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm || !s->sides[k].dl)
+    s->sides[k].ph = calloc(s->sides[k].next * DIM, sizeof(double));
+    s->sides[k].son = calloc(s->sides[k].next, 1);
+    if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm ||
+        !s->sides[k].dl || !s->sides[k].ph || !s->sides[k].son)
       return -1;
   }
   s->work.wpatch = malloc((4 * most + 1) * sizeof *s->work.wpatch);
-  if (!s->work.wpatch) return -1;
+  s->work.wcarry = malloc(WSPRING_W * most * sizeof *s->work.wcarry);
+  if (!s->work.wpatch || !s->work.wcarry) return -1;
   return 0;
 }
 
@@ -80,6 +84,8 @@ void sim_free(sim *s) {
     free(s->sides[k].ext);
     free(s->sides[k].acted);
     free(s->sides[k].dl);
+    free(s->sides[k].ph);
+    free(s->sides[k].son);
     free(s->sides[k].hm);
   }
   free(s->mats);
@@ -95,6 +101,7 @@ void sim_free(sim *s) {
   free(s->work.wext);
   free(s->work.pflag);
   free(s->work.wpatch);
+  free(s->work.wcarry);
   free(s->work.crec);
   free(s->work.cbody);
   free(s->work.cplab);
@@ -315,18 +322,10 @@ static int frictional_walls(const sim *s) {
 ** rule the nodes ahead of the contact point, stopped one by one, turn
 ** the disc back, and it slides where it would roll. */
 const char *sim_wall_advice(const sim *s) {
-  /* measured (tests/verify/wall_spring.lua): the frictionless bounce's
-  ** flight-mean spin after impacts 1 and 2 at 8, 16, 32 cells, node rule
-  ** 0.001 / -0.002, 0.0006 / 0.0003, 0.0001 / 0.0003; spring walls -0.014
-  ** / 0.031, -0.050 / -0.096, -0.032 / -0.046.  Each column keeps its
-  ** compression where the material slid on (wall_spring.c) */
-  if (s->cfg.wall_rule == WALL_SPRING)
-    return "spring walls (wall_contact = \"spring\") keep the energy of "
-           "impacts but turn a body that slides along them: the frictionless "
-           "bounce's disc spins at -0.05 and -0.10 rad per time unit after "
-           "impacts 1 and 2 at 16 cells per diameter, as friction 0.1 would "
-           "(the node rule: 0.0006); for bodies that slide or roll on walls "
-           "use \"node\" or \"patch\" (docs/verification.md, spring walls)";
+  /* spring walls are frictionless (a spring wall with friction is
+  ** refused), and no longer turn bodies that slide along them: their
+  ** springs move with the material (wall_spring.c) */
+  if (s->cfg.wall_rule == WALL_SPRING) return NULL;
   if (!frictional_walls(s)) return NULL;
   /* measured (tests/verify/rolling.lua, last case): a disc (K = 10)
   ** thrown spinning into a box of walls with friction 0.3 under gravity,

@@ -58,6 +58,9 @@ enum release_kind { RELEASE_OPEN, RELEASE_CONTACT };
 /* the widest window the normals may take (cells each way) */
 #define NORMAL_WINDOW_MAX 8
 #define NSIDES (2 * DIM)
+/* doubles per wall column wall_spring.c works in: the columns' sums,
+** the springs moved, the patches' slides and the springs (struct spr) */
+#define WSPRING_W (13 + 3 * DIM + 2 * (1 << (DIM - 1)))
 /* side index: 2 d for the low side of dimension d, 2 d + 1 for the high */
 
 typedef struct side {
@@ -77,7 +80,13 @@ typedef struct side {
                      ** and the first plane inside, sum S m (distance of the
                      ** particle from the wall plane) (boundary.c) */
   double force[DIM]; /* force the wall put on the material, last step */
-  double *dl;        /* WALL_SPRING: per column, the spring's compression */
+  /* WALL_SPRING (wall_spring.c): per column index, the compression of
+  ** the spring there (0: none) and its offset from the column along each
+  ** tangential axis, in cells, in [0, 1) (DIM entries, the normal one
+  ** 0); and per column, whether the springs acted on it this step (1)
+  ** or left it to the node rule (2) */
+  double *dl, *ph;
+  unsigned char *son;
 } side;
 
 typedef struct body {
@@ -225,6 +234,7 @@ typedef struct sim_work {
   double *wext;      /* reach.c: each thread but the first's copy of the
                         sides' reach arrays, wextn doubles each */
   size_t wextn;
+  double *wcarry;    /* wall_spring.c: WSPRING_W per column of a side */
   int32_t *wpatch;   /* boundary.c: room to find a wall's contact patches
                         in, 4 x the most columns of a side + 1 */
   /* contact.c's records of a threaded pass, added up in node order after
@@ -468,11 +478,14 @@ void boundary_apply(sim *s);   /* boundary.c: sides, drives, on q */
 void wall_penalty(sim *s);
 void wall_penalty_hold(sim *s); /* MUSL, walls held (sim_wall_hold) */
 double wall_penalty_energy(const sim *s);
-/* wall_spring.c: side k's spring at column j, on q (first..last its wall
-** and ghost planes; kk: wall_spring_k); 0 where the column holds two
-** fields (the node rule acts there) */
+/* wall_spring.c: side k's springs on q (first..last its wall and ghost
+** planes; lab: patch_find's labels of the columns with a spring, np
+** patches); then wall_spring_owns: 0 where the node rule acts instead
+** (a column with two fields, or a driven body's) */
 double wall_spring_k(const sim *s);
-int wall_spring_column(sim *s, int k, int first, int last, size_t j, double kk);
+void wall_spring_side(sim *s, int k, int first, int last, const int32_t *lab,
+                      int np);
+int wall_spring_owns(const sim *s, int k, size_t j);
 double wall_spring_energy(const sim *s);
 void wall_spring_hold(sim *s); /* MUSL, walls held (sim_wall_hold) */
 void boundary_remap(sim *s);   /* boundary.c: MUSL remap at the walls */

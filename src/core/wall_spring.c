@@ -1,6 +1,6 @@
 /*
-** wall_spring.c - walls that push each column of nodes by a spring
-** (sim.wall_contact = "spring").
+** wall_spring.c - walls that push the material by springs on the columns
+** of nodes at the wall (sim.wall_contact = "spring").
 **
 ** Why not stop the nodes.  The node rule (boundary.c) takes a node's
 ** approach away in one step: a perfectly inelastic impact of all the
@@ -15,48 +15,64 @@
 ** kinetic energy and the particles c^2 sum_p m_p S_ip^2 / 2m^2, less;
 ** the difference is lost at every step of contact.
 **
-** So the spring acts on a column of nodes: the wall plane, the ghost
-** planes beyond it and wall_band node planes inside, at one wall column
-** (a node of the wall plane).  It gives every node of the column the same
-** normal velocity change: a particle whose stencil lies in columns that
-** move alike gets that change whole, and the loss above is left only by
-** the differences between neighbouring columns.  The column's
-** compression delta follows its mass-weighted normal velocity U into the
-** wall (reach.c's separation
-** check starts it once the material reaches the wall line), and the
-** normal impulse c is the spring's force at the middle of the step
-** (implicit midpoint, per column of mass M):
-**   c = k dt (delta + dt (U^n + U^new) / 4),   U^new = U^L - c / M
-**   delta += dt (U^n + U^new) / 2
-** so that the work c (U^n + U^new) / 2 is exactly the spring energy
-** k delta^2 / 2 gained, at any k, M and dt (no step limit), and no
-** energy is booked as lost.  c >= 0: the wall pushes, never pulls; the
-** column lets go where delta returns to 0.  Frictionless: a spring wall
-** with friction is refused (lua_sim.c; docs/algorithm.md section 8c says
-** what was tried).
+** So the springs act on columns of nodes: a column is the wall plane,
+** the ghost planes beyond it and wall_band node planes inside, at one
+** node of the wall plane, and every node of a column gets the same normal
+** velocity change: a particle whose stencil lies in columns that move
+** alike gets that change whole, and the loss above is left only by the
+** differences between neighbouring columns.
+**
+** The springs belong to the material, not to places on the wall.  Kept
+** per column, a spring stayed compressed after the material it held had
+** slid on, and one the material reached started from nothing: the
+** pressure leaned back against the slide and turned a body sliding along
+** the wall (the frictionless bounce's disc at 16 cells: -0.05 / -0.10
+** rad per time unit after impacts 1 / 2; a disc sliding on a
+** frictionless floor under gravity turned -1.9 rad in 10 time units).
+** So each spring sits at a column plus an offset (ph, in cells along
+** each tangential axis, in [0, 1)), acts on the 2^(DIM-1) columns about
+** it with bilinear weights w, and moves with the material: the springs of
+** a patch (a connected set of them, boundary.c's patch_find) all move at
+** the patch's mean tangential velocity on the wall plane, so that they
+** keep their spacing; a spring whose offset passes a column goes on from
+** the next one, and a column no spring covers by half or more that the
+** material reaches and moves into gets a new one, in step with its
+** neighbours.  Two springs meeting at one column are joined as
+** sqrt(a^2 + b^2) (their energy kept); one carried off the wall's end or
+** over no material is lost, booked as an impact's loss.
+**
+** A spring's compression delta follows its velocity into the wall, the
+** w-weighted mean of its columns' mass-weighted normal velocities (its
+** mass 1 / sum w^2 / M_c), and its normal impulse c is the spring force
+** at the middle of the step (implicit midpoint):
+**   c = k dt (delta + dt (u^n + u^new) / 4),   delta += dt (u^n + u^new) / 2
+** so that the work c (u^n + u^new) / 2 is exactly the spring energy
+** k delta^2 / 2 gained, at any k, M and dt (no step limit).  Springs
+** sharing a column are coupled through it (u^new = u^L - A c, A_ij = sum_c
+** w_ic w_jc / M_c): solved one after another, each books its energy on a
+** column velocity the later ones change again, and the springs stored
+** more than the material gave (measured: +1.9 to +2.4 % of the energy
+** over the bounce's three impacts, growing with refinement).  So the
+** impulses are solved together, by Jacobi sweeps projected on c >= 0
+** (the wall pushes, never pulls): k dt^2 A / 4 is of order 1e-3, and the
+** sweeps reach round-off in a few.  delta returns to 0 where the material
+** moves back.
 **
 ** k = wall_stiffness * max(rho c^2) * h^(DIM - 2) over the scene's
 ** materials: per wall area h^(DIM-1) the stiffness of a layer of the
 ** stiffest material h / wall_stiffness thick, which vanishes as the grid
 ** is refined, so the wall tends to the rigid one.  One k for the scene,
-** so that the stored energy is k delta^2 / 2 whatever moves across the
-** columns.
+** so that the stored energy is k delta^2 / 2 whatever moves along the
+** wall.
 **
 ** A column holding two velocity fields (a shared node in it) is left to
-** the node rule (boundary.c): its compression is per column, not per
-** field; so is a driven body's, which no wall acts on.  Serial over the columns: the same bits on any thread count.
-**
-** The defect (warned of at load, sim_wall_advice): the compression is
-** kept per column, a place on the wall, while the material it belongs to
-** slides along it.  A column stays compressed after the material has
-** moved on, the pressure leans back against the slide, and a body
-** sliding along the wall is turned (the frictionless bounce's disc at 16
-** cells: -0.05 and -0.10 rad per time unit after impacts 1 and 2; the
-** node rule 0.0006).  Carried along with the column's tangential velocity
-** by an upwind step, it was worse (0.06 / 0.16): the contact is a few
-** columns wide; carried by the particles, three ways, it was smaller but
-** grew with refinement or lost energy (docs/algorithm.md section 8c).
+** the node rule (boundary.c), as is a driven body's, which no wall acts
+** on.  Frictionless: a spring wall with friction is refused (lua_sim.c;
+** docs/algorithm.md section 8c says what was tried).  Serial over the
+** columns: the same bits on any thread count.
 */
+#include <float.h>
+#include <math.h>
 #include "sim.h"
 
 /* the spring constant per column (over the bodies: once per side and
@@ -90,50 +106,362 @@ static void column_lines(const sim *s, int k, int first, int last, int *lo,
   }
 }
 
-int wall_spring_column(sim *s, int k, int first, int last, size_t j, double kk) {
+/* the column off[e] columns from j along each tangential axis e (across a
+** periodic seam too), or -1 past the wall's end */
+static size_t column_step(const sim *s, int k, size_t j, const int *off) {
+  const grid *g = &s->g;
+  size_t rest = j, to = 0, stride = 1;
+  int e;
+  for (e = 0; e < DIM; e++) {
+    int t, u;
+    if (e == k / 2) continue;
+    t = (int)(rest % (size_t)g->n[e]);
+    rest /= (size_t)g->n[e];
+    u = t + off[e];
+    if (u < 0 || u >= g->n[e]) {
+      if (!g->periodic[e]) return (size_t)-1;
+      u = ((u % g->n[e]) + g->n[e]) % g->n[e];
+    }
+    to += (size_t)u * stride;
+    stride *= (size_t)g->n[e];
+  }
+  return to;
+}
+
+/* corner a (bit b: +1 along the b-th tangential axis) of the springs'
+** square: its offsets along each axis, and its bilinear weight for a
+** spring at offset ph (with sign -1: the spring a columns behind) */
+static double corner(int k, int a, int sign, const double *ph, int *off) {
+  double wt = 1;
+  int e, bit = 0;
+  for (e = 0; e < DIM; e++) {
+    int up;
+    off[e] = 0;
+    if (e == k / 2) continue;
+    up = (a >> bit++) & 1;
+    off[e] = sign * up;
+    wt *= up ? ph[e] : 1 - ph[e];
+  }
+  return wt;
+}
+
+#define NCORNER (1 << (DIM - 1))
+
+/* the work arrays of one side (s->work.wcarry, WSPRING_W doubles per
+** column) */
+typedef struct spr {
+  size_t j, col[NCORNER]; /* its index, the columns it acts on */
+  int nc;
+  double w[NCORNER], a, u0, uL, c, next; /* weights, sum w^2 / M, ... */
+} spr;
+
+/* the springs take the last 7 + 2 NCORNER doubles of WSPRING_W */
+typedef char spr_fits[sizeof(spr) <= (7 + 2 * NCORNER) * sizeof(double) ? 1 : -1];
+
+typedef struct cols {
+  double *M, *u0, *uL, *du; /* per column: mass, normal velocities, change */
+  double *T;                /* DIM per column: the wall plane's velocity */
+  double *dl, *ph;          /* the springs moved */
+  double *pw, *pv;          /* per patch: weight, velocity (DIM) */
+  spr *sp;                  /* the springs in contact */
+  unsigned char *son;       /* s->sides[k].son */
+} cols;
+
+/* The springs' columns of side k; where the node rule takes over (two
+** fields in the column, or a driven body's), son = 2 and M = 0 */
+static void columns_sum(sim *s, int k, int lo, int hi, int wline, cols *c) {
+  const grid *g = &s->g;
+  side *sd = &s->sides[k];
+  const int d = k / 2;
+  const double sign = (k & 1) ? 1.0 : -1.0;
+  size_t j;
+  int line, e;
+  for (j = 0; j < sd->next; j++) {
+    double M = 0, P0 = 0, PL = 0;
+    int32_t nw = grid_face_node(g, d, wline, j);
+    c->son[j] = 0;
+    for (e = 0; e < DIM; e++)
+      c->T[j * DIM + e] = g->m[nw] > s->mcut ? g->p[e][nw] / g->m[nw] : 0;
+    for (line = lo; line <= hi; line++) {
+      int32_t n = grid_face_node(g, d, line, j);
+      if (g->m[n] <= s->mcut) continue;
+      if (g->head[n] >= 0 || (s->ndriven && s->fdriven[g->owner[n]] >= 0)) {
+        c->son[j] = 2;
+        break;
+      }
+      M += g->m[n];
+      P0 += sign * (g->p[d][n] - g->m[n] * sd->v[d]);
+      PL += sign * (g->q[d][n] - g->m[n] * sd->v[d]);
+    }
+    if (c->son[j] == 2) M = 0;
+    c->M[j] = M;
+    c->u0[j] = M > 0 ? P0 / M : 0;
+    c->uL[j] = M > 0 ? PL / M : 0;
+  }
+}
+
+/* the columns spring j acts on and their weights: the corners with
+** material the springs own, their weights scaled to sum to 1 */
+static int spring_corners(const sim *s, int k, size_t j, const cols *c,
+                          size_t *col, double *w) {
+  const double *ph = &s->sides[k].ph[j * DIM];
+  int nc = 0, a, off[DIM];
+  double sum = 0;
+  for (a = 0; a < NCORNER; a++) {
+    double wt = corner(k, a, 1, ph, off);
+    size_t to = column_step(s, k, j, off);
+    if (to == (size_t)-1 || !(wt > 0) || !(c->M[to] > 0)) continue;
+    col[nc] = to;
+    w[nc++] = wt;
+    sum += wt;
+  }
+  for (a = 0; a < nc; a++) w[a] /= sum;
+  return nc;
+}
+
+/* Move the springs with their patches' slide over the step, each patch
+** at the mean tangential velocity of the wall plane under it, weighted
+** by compression and weight (lab: the patch of each spring, np of them) */
+static void springs_move(sim *s, int k, const int32_t *lab, int np, cols *c) {
+  const grid *g = &s->g;
+  side *sd = &s->sides[k];
+  const size_t nf = sd->next;
+  const double kk = wall_spring_k(s);
+  size_t j, col[NCORNER];
+  double w[NCORNER];
+  int p, e, a;
+  for (p = 0; p < np; p++) {
+    c->pw[p] = 0;
+    for (e = 0; e < DIM; e++) c->pv[p * DIM + e] = 0;
+  }
+  for (j = 0; j < nf; j++) {
+    int nc;
+    if (!(sd->dl[j] > 0) || lab[j] < 0) continue;
+    nc = spring_corners(s, k, j, c, col, w);
+    for (a = 0; a < nc; a++) {
+      double wt = sd->dl[j] * w[a];
+      c->pw[lab[j]] += wt;
+      for (e = 0; e < DIM; e++)
+        c->pv[lab[j] * DIM + e] += wt * c->T[col[a] * DIM + e];
+    }
+  }
+  for (j = 0; j < nf; j++) {
+    c->dl[j] = 0;
+    for (e = 0; e < DIM; e++) c->ph[j * DIM + e] = 0;
+  }
+  for (j = 0; j < nf; j++) {
+    double ph[DIM], a2, b2 = sd->dl[j] * sd->dl[j];
+    int off[DIM];
+    size_t to;
+    if (!(sd->dl[j] > 0)) continue;
+    p = lab[j];
+    for (e = 0; e < DIM; e++) {
+      double v = p >= 0 && c->pw[p] > 0 ? c->pv[p * DIM + e] / c->pw[p] : 0;
+      ph[e] = off[e] = 0;
+      if (e == k / 2) continue;
+      ph[e] = sd->ph[j * DIM + e] + v * s->dt * g->inv_h;
+      off[e] = (int)floor(ph[e]);
+      ph[e] -= off[e];
+    }
+    to = column_step(s, k, j, off);
+    if (to == (size_t)-1) { /* off the wall's end */
+      s->e.impact += 0.5 * kk * b2;
+      continue;
+    }
+    a2 = c->dl[to] * c->dl[to];
+    for (e = 0; e < DIM; e++) /* joined: the offset weighted by energy */
+      c->ph[to * DIM + e] = (a2 * c->ph[to * DIM + e] + b2 * ph[e]) / (a2 + b2);
+    c->dl[to] = sqrt(a2 + b2);
+  }
+  for (j = 0; j < nf; j++) {
+    sd->dl[j] = c->dl[j];
+    for (e = 0; e < DIM; e++) sd->ph[j * DIM + e] = c->ph[j * DIM + e];
+  }
+}
+
+/* whether a spring acts on column j with weight 1/2 or more */
+static int spring_covers(const sim *s, int k, size_t j) {
+  const side *sd = &s->sides[k];
+  int a, off[DIM];
+  for (a = 0; a < NCORNER; a++) {
+    size_t from;
+    corner(k, a, -1, sd->ph, off); /* the offsets only */
+    from = column_step(s, k, j, off);
+    if (from == (size_t)-1 || !(sd->dl[from] > 0)) continue;
+    if (corner(k, a, -1, &sd->ph[from * DIM], off) >= 0.5) return 1;
+  }
+  return 0;
+}
+
+/* A new spring for column j, in step with its neighbours: the offset of
+** the most compressed spring among the columns next to j (0 if none),
+** at the index whose spring then sits nearest j.  Returns the index, or
+** -1 if a spring is there already. */
+static size_t spring_new(sim *s, int k, size_t j) {
+  side *sd = &s->sides[k];
+  int a, e, off[DIM], n3 = 1;
+  size_t best = (size_t)-1, to;
+  for (e = 0; e < DIM - 1; e++) n3 *= 3;
+  for (a = 0; a < n3; a++) {
+    int r = a;
+    size_t from;
+    for (e = 0; e < DIM; e++) {
+      off[e] = 0;
+      if (e == k / 2) continue;
+      off[e] = r % 3 - 1;
+      r /= 3;
+    }
+    from = column_step(s, k, j, off);
+    if (from == (size_t)-1 || !(sd->dl[from] > 0)) continue;
+    if (best == (size_t)-1 || sd->dl[from] > sd->dl[best]) best = from;
+  }
+  for (e = 0; e < DIM; e++)
+    off[e] = e != k / 2 && best != (size_t)-1 && sd->ph[best * DIM + e] >= 0.5 ? -1 : 0;
+  to = column_step(s, k, j, off);
+  if (to == (size_t)-1 || sd->dl[to] > 0) return (size_t)-1;
+  for (e = 0; e < DIM; e++)
+    sd->ph[to * DIM + e] = best != (size_t)-1 ? sd->ph[best * DIM + e] : 0;
+  sd->dl[to] = DBL_MIN; /* taken; starts from 0 */
+  return to;
+}
+
+/* the springs in contact: those there are, then new ones; returns how
+** many */
+static size_t springs_gather(sim *s, int k, cols *c) {
   const sim_cfg *cfg = &s->cfg;
+  side *sd = &s->sides[k];
+  const size_t nf = sd->next;
+  const double kk = wall_spring_k(s);
+  size_t ns = 0, j;
+  int a;
+  for (j = 0; j < 2 * nf; j++) {
+    size_t js = j < nf ? j : j - nf;
+    spr *q;
+    if (j < nf && !(sd->dl[js] > 0)) continue;
+    if (j >= nf) { /* a column no spring covers: a new one, once the
+                   ** material reaches the wall line there and moves into it */
+      size_t col = js;
+      if (!(c->M[col] > 0) || (cfg->gap_check && sd->ext[col] < 0) ||
+          !(c->uL[col] > 0) || spring_covers(s, k, col))
+        continue;
+      js = spring_new(s, k, col);
+      if (js == (size_t)-1) continue;
+    }
+    q = &c->sp[ns];
+    q->j = js;
+    q->nc = spring_corners(s, k, js, c, q->col, q->w);
+    if (!q->nc) { /* over no material: lost */
+      s->e.impact += 0.5 * kk * sd->dl[js] * sd->dl[js];
+      sd->dl[js] = 0;
+      continue;
+    }
+    q->a = q->u0 = q->uL = q->c = 0;
+    for (a = 0; a < q->nc; a++) {
+      q->a += q->w[a] * q->w[a] / c->M[q->col[a]];
+      q->u0 += q->w[a] * c->u0[q->col[a]];
+      q->uL += q->w[a] * c->uL[q->col[a]];
+      c->son[q->col[a]] = 1;
+    }
+    ns++;
+  }
+  return ns;
+}
+
+/* the columns' velocity changes du from the springs' impulses */
+static void springs_du(const sim *s, int k, cols *c, size_t ns) {
+  size_t i, j;
+  int a;
+  for (j = 0; j < s->sides[k].next; j++) c->du[j] = 0;
+  for (i = 0; i < ns; i++)
+    for (a = 0; a < c->sp[i].nc; a++)
+      c->du[c->sp[i].col[a]] += c->sp[i].w[a] * c->sp[i].c / c->M[c->sp[i].col[a]];
+}
+
+/* the impulses together (projected Jacobi), then the compressions */
+static void springs_solve(sim *s, int k, cols *c, size_t ns) {
+  side *sd = &s->sides[k];
+  const double dt = s->dt, kk = wall_spring_k(s);
+  size_t i;
+  int it, a;
+  for (it = 0; it < 50; it++) {
+    double most = 0, moved = 0;
+    springs_du(s, k, c, ns);
+    for (i = 0; i < ns; i++) {
+      spr *q = &c->sp[i];
+      double other = -q->a * q->c, cn;
+      for (a = 0; a < q->nc; a++) other += q->w[a] * c->du[q->col[a]];
+      cn = kk * dt * (sd->dl[q->j] + 0.25 * dt * (q->u0 + q->uL - other)) /
+           (1 + 0.25 * kk * dt * dt * q->a);
+      q->next = cn > 0 ? cn : 0;
+      if (q->next > most) most = q->next;
+      if (fabs(q->next - q->c) > moved) moved = fabs(q->next - q->c);
+    }
+    for (i = 0; i < ns; i++) c->sp[i].c = c->sp[i].next;
+    if (!(moved > 1e-15 * most)) break;
+  }
+  springs_du(s, k, c, ns);
+  for (i = 0; i < ns; i++) {
+    spr *q = &c->sp[i];
+    double u1 = q->uL, *dl = &sd->dl[q->j];
+    for (a = 0; a < q->nc; a++) u1 -= q->w[a] * c->du[q->col[a]];
+    if (*dl == DBL_MIN) *dl = 0;
+    *dl += 0.5 * dt * (q->u0 + u1);
+    if (!(*dl > 0)) *dl = 0;
+  }
+}
+
+/* each column's velocity change on its nodes, by mass */
+static void columns_push(sim *s, int k, int lo, int hi, const cols *c) {
   grid *g = &s->g;
   side *sd = &s->sides[k];
   const int d = k / 2;
-  const double sign = (k & 1) ? 1.0 : -1.0, dt = s->dt;
-  double M = 0, P0 = 0, PL = 0, u0, uL, u1, c, *dl = &sd->dl[j];
-  int lo, hi, line;
+  const double sign = (k & 1) ? 1.0 : -1.0;
+  size_t j;
+  int line;
+  for (j = 0; j < sd->next; j++) {
+    if (c->son[j] != 1 || c->du[j] == 0) continue;
+    for (line = lo; line <= hi; line++) {
+      int32_t n = grid_face_node(g, d, line, j);
+      double imp;
+      if (g->m[n] <= s->mcut) continue;
+      imp = -sign * g->m[n] * c->du[j];
+      g->q[d][n] += imp;
+      sd->force[d] += imp / s->dt;
+      s->e.boundary += imp * sd->v[d]; /* a moving wall's work */
+    }
+  }
+}
+
+void wall_spring_side(sim *s, int k, int first, int last, const int32_t *lab,
+                      int np) {
+  side *sd = &s->sides[k];
+  const size_t nf = sd->next;
+  double *w = s->work.wcarry;
+  cols c;
+  size_t ns;
+  int lo, hi;
   column_lines(s, k, first, last, &lo, &hi);
-  for (line = lo; line <= hi; line++) {
-    int32_t n = grid_face_node(g, d, line, j);
-    if (g->m[n] <= s->mcut) continue;
-    if (g->head[n] >= 0) { *dl = 0; return 0; } /* two fields: the node rule */
-    /* a driven body's: the node rule, which leaves it to its drive */
-    if (s->ndriven && s->fdriven[g->owner[n]] >= 0) { *dl = 0; return 0; }
-    M += g->m[n];
-    P0 += sign * (g->p[d][n] - g->m[n] * sd->v[d]);
-    PL += sign * (g->q[d][n] - g->m[n] * sd->v[d]);
-  }
-  if (!(M > 0)) { *dl = 0; return 1; }
-  u0 = P0 / M;
-  uL = PL / M;
-  /* not yet in contact: the material has not reached the wall line, or
-  ** the column does not move into it */
-  if (!(*dl > 0) && ((cfg->gap_check && sd->ext[j] < 0) || !(uL > 0))) {
-    *dl = 0;
-    return 1;
-  }
-  c = kk * dt * (*dl + 0.25 * dt * (u0 + uL)) / (1 + 0.25 * kk * dt * dt / M);
-  if (!(c > 0)) c = 0;
-  u1 = uL - c / M;
-  *dl += 0.5 * dt * (u0 + u1);
-  if (!(*dl > 0)) *dl = 0;
-  if (c == 0) return 1;
-  for (line = lo; line <= hi; line++) {
-    int32_t n = grid_face_node(g, d, line, j);
-    double imp;
-    if (g->m[n] <= s->mcut) continue;
-    imp = -sign * c * g->m[n] / M;
-    g->q[d][n] += imp;
-    sd->force[d] += imp / dt;
-    s->e.boundary += imp * sd->v[d]; /* a moving wall's work */
-  }
-  return 1;
+  c.M = w;
+  c.u0 = w + nf;
+  c.uL = w + 2 * nf;
+  c.du = w + 3 * nf;
+  c.T = w + 4 * nf;
+  c.dl = c.T + DIM * nf;
+  c.ph = c.dl + nf;
+  c.pw = c.ph + DIM * nf;
+  c.pv = c.pw + nf;
+  c.sp = (spr *)(void *)(c.pv + DIM * nf);
+  c.son = sd->son;
+  columns_sum(s, k, lo, hi, (k & 1) ? first : last, &c);
+  springs_move(s, k, lab, np, &c);
+  ns = springs_gather(s, k, &c);
+  springs_solve(s, k, &c, ns);
+  columns_push(s, k, lo, hi, &c);
+}
+
+/* whether the springs own side k's column j (not the node rule's) */
+int wall_spring_owns(const sim *s, int k, size_t j) {
+  return s->sides[k].son[j] != 2;
 }
 
 /*
@@ -156,7 +484,7 @@ void wall_spring_hold(sim *s) {
     grid_wall_lines(g, k, &first, &last);
     column_lines(s, k, first, last, &lo, &hi);
     for (j = 0; j < sd->next; j++) {
-      if (!(sd->dl[j] > 0)) continue;
+      if (sd->son[j] != 1) continue;
       for (line = lo; line <= hi; line++) {
         int32_t n = grid_face_node(g, d, line, j);
         if (g->m[n] > s->mcut) g->p[d][n] = g->q[d][n];
@@ -178,3 +506,4 @@ double wall_spring_energy(const sim *s) {
   }
   return e;
 }
+

@@ -282,10 +282,17 @@ static void visit_sim(ckv *v, sim *s) {
     vvec(v, pre, "force", sd->force, DIM);
     if (s->cfg.wall_rule == WALL_SPRING && sd->dl) { /* the springs' state */
       size_t j;
+      int a;
       for (j = 0; j < sd->next && !v->failed; j++) {
         if (!v->apply && sd->dl[j] == 0) continue; /* absent reads as 0 */
         snprintf(nm, sizeof nm, "%sdl.%zu", pre, j);
         vreal_opt(v, nm, &sd->dl[j], 0);
+        if (!(sd->dl[j] > 0)) continue;
+        for (a = 0; a < DIM; a++) { /* its offset along the wall */
+          if (a == k / 2) continue;
+          snprintf(nm, sizeof nm, "%sph.%zu.%c", pre, j, "xyz"[a]);
+          vreal_opt(v, nm, &sd->ph[j * DIM + a], 0);
+        }
       }
     }
   }

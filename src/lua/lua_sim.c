@@ -406,12 +406,16 @@ int lsim_new(lua_State *L) {
         double *ext = ls->s.sides[k].ext;
         unsigned char *acted = ls->s.sides[k].acted;
         double *hm = ls->s.sides[k].hm, *dl = ls->s.sides[k].dl;
+        double *ph = ls->s.sides[k].ph;
+        unsigned char *son = ls->s.sides[k].son;
         size_t next = ls->s.sides[k].next;
         ls->s.sides[k] = keep[k];
         ls->s.sides[k].ext = ext;
         ls->s.sides[k].acted = acted;
         ls->s.sides[k].hm = hm;
         ls->s.sides[k].dl = dl;
+        ls->s.sides[k].ph = ph;
+        ls->s.sides[k].son = son;
         ls->s.sides[k].next = next;
       }
     }

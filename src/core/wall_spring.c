@@ -148,17 +148,20 @@ static double corner(int k, int a, int sign, const double *ph, int *off) {
 
 #define NCORNER (1 << (DIM - 1))
 
-/* the work arrays of one side (s->work.wcarry, WSPRING_W doubles per
-** column) */
+/* a spring in contact this step: its index, the columns it acts on
+** and their weights, sum w^2 / M, its velocities into the wall at the
+** step's start and after the forces, and its impulse */
 typedef struct spr {
-  size_t j, col[NCORNER]; /* its index, the columns it acts on */
+  size_t j, col[NCORNER];
   int nc;
-  double w[NCORNER], a, u0, uL, c; /* weights, sum w^2 / M, ... */
+  double w[NCORNER], a, u0, uL, c;
 } spr;
 
 /* the springs take the last 7 + 2 NCORNER doubles of WSPRING_W */
 typedef char spr_fits[sizeof(spr) <= (7 + 2 * NCORNER) * sizeof(double) ? 1 : -1];
 
+/* the work arrays of one side (s->work.wcarry, WSPRING_W doubles per
+** column) */
 typedef struct cols {
   double *M, *u0, *uL, *du; /* per column: mass, normal velocities, change */
   double *T;                /* DIM per column: the wall plane's velocity */
@@ -286,7 +289,7 @@ static int spring_covers(const sim *s, int k, size_t j) {
   int a, off[DIM];
   for (a = 0; a < NCORNER; a++) {
     size_t from;
-    corner(k, a, -1, sd->ph, off); /* the offsets only */
+    corner(k, a, -1, sd->ph, off); /* for the offsets; the weight below */
     from = column_step(s, k, j, off);
     if (from == (size_t)-1 || !(sd->dl[from] > 0)) continue;
     if (corner(k, a, -1, &sd->ph[from * DIM], off) >= 0.5) return 1;

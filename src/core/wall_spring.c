@@ -168,6 +168,7 @@ typedef struct cols {
   double *dl, *ph;          /* the springs moved */
   double *pw, *pv;          /* per patch: weight, velocity (DIM) */
   spr *sp;                  /* the springs in contact */
+  double k;                 /* wall_spring_k, once a side and step */
   unsigned char *son;       /* s->sides[k].son */
 } cols;
 
@@ -230,7 +231,7 @@ static void springs_move(sim *s, int k, const int32_t *lab, int np, cols *c) {
   const grid *g = &s->g;
   side *sd = &s->sides[k];
   const size_t nf = sd->next;
-  const double kk = wall_spring_k(s);
+  const double kk = c->k;
   size_t j, col[NCORNER];
   double w[NCORNER];
   int p, e, a;
@@ -335,7 +336,7 @@ static size_t springs_gather(sim *s, int k, cols *c) {
   const sim_cfg *cfg = &s->cfg;
   side *sd = &s->sides[k];
   const size_t nf = sd->next;
-  const double kk = wall_spring_k(s);
+  const double kk = c->k;
   size_t ns = 0, j;
   int a;
   for (j = 0; j < 2 * nf; j++) {
@@ -389,7 +390,7 @@ static void springs_du(const sim *s, int k, cols *c, size_t ns) {
 ** spring was left compressed by a third of the domain) */
 static void springs_solve(sim *s, int k, cols *c, size_t ns) {
   side *sd = &s->sides[k];
-  const double dt = s->dt, kk = wall_spring_k(s);
+  const double dt = s->dt, kk = c->k;
   size_t i;
   int it, a;
   for (i = 0; i < ns; i++) c->sp[i].c = 0;
@@ -464,6 +465,7 @@ void wall_spring_side(sim *s, int k, int first, int last, const int32_t *lab,
   c.pv = c.pw + nf;
   c.sp = (spr *)(void *)(c.pv + DIM * nf);
   c.son = sd->son;
+  c.k = wall_spring_k(s);
   columns_sum(s, k, lo, hi, (k & 1) ? first : last, &c);
   springs_move(s, k, lab, np, &c);
   ns = springs_gather(s, k, &c);

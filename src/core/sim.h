@@ -99,6 +99,9 @@ typedef struct body {
   int hold;          /* heat (heat.h): its particles are held at T_hold, a
                         reservoir */
   double T_hold;
+  int flat;          /* set by the binding: seeded from a shape with flat
+                        faces (rect, polygon, box, extrude) and given no
+                        bond; sim_normals_advice looks for two of them */
 } body;
 
 /* a contact law between two fields: friction, and the most their
@@ -382,6 +385,10 @@ const char *sim_advice(const sim *s);
 /* a warning when a wall with friction acts by the node rule, under which
 ** friction hardly turns a round body (docs/verification.md), or NULL */
 const char *sim_wall_advice(const sim *s);
+/* a warning when two bodies with flat faces, one of them free, meet with
+** contact normals taken node by node, which hold a block sliding on a
+** flat body at its corners (docs/verification.md), or NULL */
+const char *sim_normals_advice(const sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
 /* gravity's potential from pe = -sum m g.x over the wrapped positions:

@@ -536,6 +536,7 @@ int lbody_new(lua_State *L) {
   double v0[DIM] = {0}, w3[3] = {0}, c[DIM] = {0}, scale = 1, bond, T0, Th;
   size_t first;
   int mi, b, d, exact, skip, isrest = 0, vfun, outside = 0, cut = 0, tfun, spin, own;
+  int flat = 0; /* a shape with flat faces (sim_normals_advice) */
   turned lt;
   double blo[DIM], bhi[DIM];
   int32_t field;
@@ -607,6 +608,7 @@ int lbody_new(lua_State *L) {
     }
     sh = lshape_check(L, -1);
     isrest = sh->kind == SH_REST;
+    flat = sh->kind == SH_RECT || sh->kind == SH_POLYGON || sh->kind == SH_EXTRUDE;
     if (own && isrest)
       luaL_error(L, "body '%s': field 'lattice': the rest is the grid "
                     "lattice's points no body took; it has no lattice of its "
@@ -679,6 +681,7 @@ int lbody_new(lua_State *L) {
   lua_pop(L, 1);
   b = sim_add_body(s, name, mi, field);
   if (b < 0) { luaL_error(L, "body: out of memory"); }
+  s->bodies[b].flat = flat && !(bond > 0);
   for (k = 0; k < bx->ntaken; k++) ls->occ[bx->taken[k]] = b;
   /* the centre of the spin, and each point's arm from it, measured as the
   ** nearest image across periodic sides (a body across a seam spins

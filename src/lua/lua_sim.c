@@ -1085,6 +1085,10 @@ static int lindex(lua_State *L) {
     const char *adv = sim_wall_advice(s);
     if (adv) lua_pushstring(L, adv); else lua_pushnil(L);
   }
+  else if (strcmp(k, "normals_advice") == 0) {
+    const char *adv = sim_normals_advice(s);
+    if (adv) lua_pushstring(L, adv); else lua_pushnil(L);
+  }
   else if (strcmp(k, "cell") == 0) lua_pushnumber(L, s->g.h);
   else if (strcmp(k, "dim") == 0) lua_pushinteger(L, DIM);
   else if (strcmp(k, "flip") == 0) lua_pushnumber(L, s->cfg.flip);
@@ -1131,7 +1135,8 @@ static int lindex(lua_State *L) {
   else if (strcmp(k, "bond_release") == 0) lua_pushstring(L, releaseopt[s->cfg.release]);
   else {
     static const char *const fields[] = {
-        "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "wall_advice", "cell",
+        "t", "dt", "steps", "t_end", "n", "nbody", "nfield", "advice", "wall_advice",
+        "normals_advice", "cell",
         "dim", "flip", "cfl", "friction", "bond_energy", "removed", "threads", "shared_nodes",
         "memory", "outdir", "update", "shape", "transfer", "ignition_time",
         "ignition", "reaction_tol", "reacted", "reaction_substeps", "wall_contact",

@@ -651,10 +651,11 @@ int run_until(lua_State *L, int simidx, double t_end, long max_steps) {
   if (!ls->advised) { /* now that the bodies (fields) are known */
     /* printed once per process: a study or a test script that builds
     ** many such scenes says it once; each keeps it in sim.advice */
-    static int printed, wprinted;
+    static int printed, wprinted, nprinted;
     ls->advised = 1;
     warn_once(ls, &printed, sim_advice(s));
     warn_once(ls, &wprinted, sim_wall_advice(s));
+    warn_once(ls, &nprinted, sim_normals_advice(s));
   }
   if (isfinite(t_end)) run_check(L, simidx, ls, t_end);
   out_start(L, ls);

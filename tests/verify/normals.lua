@@ -473,6 +473,31 @@ do
     local r = C.block {k = k, method = "mass", mu = 0, shape = "bspline2"}
     V.info(string.format("defaults, grid-aligned face, mu 0, %d cells: a / a_ref (1 wanted)", k), r.a)
   end
+  -- the scenes that meet this get a warning naming the remedy; round
+  -- bodies, bonded ones, two driven ones and a window or patch do not
+  local dom = {x = {0, 1}, y = {0, 1}}
+  local el = mvmpm.elastic {K = 1, G = 0.5, density = 1}
+  local function advice(o, bodies)
+    local s = mvmpm.sim(setmetatable(o, {__index = {domain = dom, cell = 0.1}}))
+    for _, b in ipairs(bodies) do s:body(b) end
+    return s.normals_advice
+  end
+  local slab = {shape = mvmpm.rect {lo = {0, 0}, hi = {1, 0.2}}, material = el, driven = {0, 0}}
+  local block = {shape = mvmpm.rect {lo = {0.3, 0.2}, hi = {0.5, 0.4}}, material = el}
+  local adv = advice({}, {slab, block})
+  V.holds("a block on a flat body, normals node by node: warned, naming the remedy",
+    adv ~= nil and adv:find("normal_patch = true", 1, true) ~= nil, 0, tostring(adv))
+  V.holds("a triangle on it, normals = \"mass\" named: warned too", adv ~= nil and
+    advice({normals = "mass"}, {slab, {shape = mvmpm.polygon {{0.3, 0.2}, {0.5, 0.2}, {0.4, 0.4}}, material = el}}) ~= nil)
+  V.holds("not warned: a window, or one normal per patch",
+    advice({normal_window = 4}, {slab, block}) == nil and advice({normal_patch = true}, {slab, block}) == nil)
+  V.holds("not warned: a disc on the flat body",
+    advice({}, {slab, {shape = mvmpm.disk {center = {0.4, 0.3}, radius = 0.1}, material = el}}) == nil)
+  V.holds("not warned: a bonded block, or two driven flat bodies",
+    advice({}, {slab, {shape = block.shape, material = el, bond = 1}}) == nil and
+    advice({}, {slab, {shape = block.shape, material = el, driven = {0, 0}}}) == nil)
+  V.holds("not warned: one velocity field (fields = \"single\")",
+    advice({fields = "single"}, {{shape = slab.shape, material = el}, block}) == nil)
   for _, c in ipairs {{nil, 0}, {45, 0}, {45, 0.2}} do
     for _, k in ipairs {8, 16} do
       local r = C.block {k = k, method = "maxvolume/4+patch", mu = c[2], deg = c[1], shape = "bspline2"}

@@ -10,12 +10,14 @@
 --   centres, so the relative velocity across it is kept, no spin, energy
 --   kept.
 -- A normals method is named "method/R" for normal_window = R ("method"
--- alone: R = 0), with "+patch" after it for normal_patch = true.
+-- alone: R = 0), with "+patch" after it for normal_patch = true;
+-- "default" (or none) gives none of the three: the sim's defaults.
 local mvmpm = require "mvmpm"
 local M = {}
 
 -- "method/R+patch" -> normals, normal_window, normal_patch
 function M.opts(method)
+  if method == nil or method == "default" then return nil, nil, nil end
   local base, patch = method:match("^(.-)(%+patch)$")
   base = base or method
   local m, w = base:match("^(%a+)/(%d+)$")

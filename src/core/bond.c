@@ -132,7 +132,7 @@ static void gather(sim *s, size_t i0, size_t i1, int blk, int pass) {
   const int rowlen = stencil_rowlen(cfg->shape), fitting = cfg->bond_fit;
   /* the normals took the volume gradient in p2g already (the same sums
   ** in the same order) */
-  const int byvol = cfg->normals != NORMALS_MASS;
+  const int byvol = sim_vol_grad(s);
   unsigned char mine[SHAPE_MAXW];
   stencil st;
   size_t i, k;

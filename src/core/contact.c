@@ -7,9 +7,16 @@
 ** G = sum_r g_r, the outward unit normal of body r is
 **   n_r = (2 g_r - G) / |2 g_r - G|
 ** With two fields this is (g_A - g_B)/|.|, so n_B = -n_A exactly: both
-** sides see one interface.  That is sim.normals = "mass", the default;
-** normals() below gives the others ("volume", "maxvolume", "plane"), and
-** with sim.normal_window takes each from the shared nodes around.
+** sides see one interface.  That is sim.normals = "mass"; normals()
+** below gives the others ("volume", "maxvolume", "plane"), and with
+** sim.normal_window takes each from the shared nodes around.  The
+** default, "auto", is "mass" but where only flat-faced bodies meet:
+** there node by node the corners' normals, turned toward a block's side,
+** hold it on a flat body (a / a_ref 0.006 on B-splines), and the flat
+** faces take "maxvolume" over NORMAL_FLAT_WINDOW cells and one normal
+** per patch (within 1.6 % at 0, 30 and 45 degrees); everywhere, that
+** rule made a settled pile of discs creep and two spheres lose their
+** head-on symmetry (docs/verification.md, contact: normals).
 **
 ** The rule (after the grid momentum update, on q = p + dt f):
 **   v_cm = sum q_r / sum m_r (a driven body's velocity replaces it)
@@ -223,18 +230,33 @@ static void window(const grid *g, double *const a[DIM], int32_t n, int32_t f,
 **     difference on an exact tie; so with two fields n_B = -n_A.
 **   "plane": the fitted plane, the volume gradients' difference where
 **     it has none. */
+static int flat_node(const sim *s, int32_t n) {
+  const grid *g = &s->g;
+  int32_t sl;
+  for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
+    if (!s->fflat[g->sfield[sl]]) return 0;
+  return 1;
+}
+
 static void normals(sim *s, size_t k0, size_t k1) {
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
-  double *const *a = cfg->normals == NORMALS_MASS ? g->sg : g->sv;
-  const int maxv = cfg->normals == NORMALS_MAXVOLUME;
-  const int pl = cfg->normals == NORMALS_PLANE;
-  const int R = cfg->normal_window;
+  const int autom = cfg->normals == NORMALS_AUTO, flats = autom && s->flatpair;
+  double *const *ag = cfg->normals == NORMALS_MASS || autom ? g->sg : g->sv;
+  const int maxvg = cfg->normals == NORMALS_MAXVOLUME;
+  const int pl0 = cfg->normals == NORMALS_PLANE;
+  const int R0 = cfg->normal_window;
   /* the patch's mean normal wants each fit unbiased: window() */
-  const double rr = cfg->normal_patch && R > 0 ? (R + 1.0) * (R + 1.0) : INFINITY;
+  const double rr = cfg->normal_patch && R0 > 0 ? (R0 + 1.0) * (R0 + 1.0) : INFINITY;
   size_t k;
   for (k = k0; k < k1; k++) {
     int32_t n = g->shared[k], sl, first = g->head[n];
+    /* "auto" between flat faces: the larger volume gradient over the
+    ** flat window (one normal per patch follows, contact_patch.c) */
+    const int flat = flats && flat_node(s, n);
+    double *const *a = flat ? g->sv : ag;
+    const int maxv = flat || maxvg, pl = !flat && pl0;
+    const int R = flat ? NORMAL_FLAT_WINDOW : R0;
     /* the plane's equations are the same for every field of the node
     ** but for the sign of the right side, so with two fields the second
     ** normal is the first's negative, to the bit: taken so, not solved
@@ -290,7 +312,8 @@ static void normals_part(void *arg, int t, int nparts) {
 
 void contact_normals(sim *s) {
   par_run(s->work.par, normals_part, s);
-  if (s->cfg.normal_patch && s->work.cplab) contact_patch_normals(s);
+  if ((s->cfg.normal_patch || sim_flat_patches(s)) && s->work.cplab)
+    contact_patch_normals(s);
 }
 
 /*
@@ -942,7 +965,7 @@ int contact_prepare(sim *s) {
   if (grow((void **)&wk->crec, &nc, g->nshared, CREC * sizeof *wk->crec) ||
       grow((void **)&wk->cbody, &wk->cnodecap, g->nshared, sizeof *wk->cbody))
     return -1;
-  if (s->cfg.body_rule == BODY_PATCH || s->cfg.normal_patch) {
+  if (s->cfg.body_rule == BODY_PATCH || s->cfg.normal_patch || sim_flat_patches(s)) {
     /* contact_patch.c: a label per node, -1 between steps, and a list */
     if (!wk->cplab) {
       size_t i;

@@ -334,6 +334,11 @@ void contact_patch_normals(sim *s) {
     int d;
     if (lab[n] != -2) continue;
     len = flood(s, n, 0, list);
+    pair(s, n, &a, &b);
+    /* under "auto" alone, only where two flat faces meet (sim.fflat) */
+    if (!s->cfg.normal_patch &&
+        !(s->fflat[g->sfield[a]] && s->fflat[g->sfield[b]]))
+      continue;
     for (i = 0; i < len; i++) {
       double w;
       pair(s, list[i], &a, &b);

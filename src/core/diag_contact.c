@@ -32,6 +32,7 @@ int diag_grid(sim *s) {
   if (!s->started) sim_begin(s);
   grid_reset(&s->g, 0);
   p2g_plan(s);
+  sim_flat(s);
   s->g.moments = s->cfg.normals == NORMALS_PLANE;
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {
     snprintf(s->err, sizeof s->err, "contacts: out of memory for shared nodes");

@@ -7,8 +7,9 @@
 ** the contact normals come from: the mass gradient sum_p m_p grad S_ip
 ** (sg), or with sim.normals "volume" or "maxvolume" the volume gradient
 ** sum_p V_p grad S_ip (sv, which bonds then need not gather again).  One
-** of the two, so a scene pays for the one it uses; "plane" also gathers
-** the particles' moments about the node (grid.h).
+** of the two, so a scene pays for the one it uses ("auto" takes both
+** only where flat faces meet, sim_vol_grad); "plane" also gathers the
+** particles' moments about the node (grid.h).
 **
 ** USAVG (usf.c) splits the scatter in two: mass and momentum first, then
 ** the forces of the stresses its first half-step update gave (p2g_force).
@@ -42,8 +43,7 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   ** stores to the other arrays */
   double *restrict gm = g->m;
   double *restrict gp[DIM], *restrict gf[DIM];
-  const int byvol = cfg->normals != NORMALS_MASS;
-  double *const *sgrad = byvol ? g->sv : g->sg;
+  const int bymass = sim_mass_grad(s), byvol = sim_vol_grad(s);
   const int plane = what != P2G_FORCE && shared && cfg->normals == NORMALS_PLANE;
   const int mass = what != P2G_FORCE, force = what != P2G_MASS;
   const double *C[NTENS] = {NULL};
@@ -65,7 +65,6 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     double x[DIM], v0[DIM], F[NTENS], sv[DIM][DIM];
     double mp = ps->m[i], J, V;
     int32_t f = bd[ps->body[i]].field;
-    double wg;
     int k;
     for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; v0[a] = ps->v[a][i]; }
     for (a = 0; a < NTENS; a++) F[a] = ps->F[a][i];
@@ -73,7 +72,6 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     V = J * ps->vol0[i];
     for (a = 0; a < DIM; a++)
       for (b = 0; b < DIM; b++) sv[a][b] = V * ps->s[vec_sym(a, b)][i];
-    wg = byvol ? V : mp; /* the normals' weight */
     if (split &&
         !bands_rows(&wk->bands, &geo, kind, x[BANDS_DIM], blk, pass, mine))
       continue;
@@ -110,7 +108,8 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
         g->sm[sl] += wm;
         for (a = 0; a < DIM; a++) {
           g->sp[a][sl] += wm * v[a];
-          sgrad[a][sl] += wg * st.dw[a][k];
+          if (bymass) g->sg[a][sl] += mp * st.dw[a][k];
+          if (byvol) g->sv[a][sl] += V * st.dw[a][k];
         }
         if (plane) { /* moments of r / h, weighted w V */
           double wv = w * V, u[DIM];

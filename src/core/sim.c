@@ -26,6 +26,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->cfg.cfl = 0.25;
   s->t_end = 1.0;
   s->cfg.gap_check = 1;
+  s->cfg.normals = NORMALS_AUTO;
   s->cfg.normal_window = 0;
   s->cfg.normal_patch = 0;
   s->cfg.bond_default = INFINITY;
@@ -92,6 +93,7 @@ void sim_free(sim *s) {
   free(s->bodies);
   free(s->bmat);
   free(s->fdriven);
+  free(s->fflat);
   free(s->laws);
   free(s->flaw);
   par_free(s->work.par);
@@ -197,6 +199,10 @@ static int grow_fields(sim *s, int nfield) {
   if (!fl) return -1;
   s->flaw = fl;
   for (k = s->nfield; k < nfield; k++) { fd[k] = -1; fl[k] = 0; }
+  fl = realloc(s->fflat, nfield);
+  if (!fl) return -1;
+  s->fflat = fl;
+  for (k = s->nfield; k < nfield; k++) fl[k] = 0;
   s->nfield = nfield;
   return 0;
 }
@@ -364,8 +370,8 @@ const char *sim_wall_advice(const sim *s) {
 const char *sim_normals_advice(const sim *s) {
   const sim_cfg *cfg = &s->cfg;
   int32_t i, j;
-  if (cfg->normal_window > 0 || cfg->normal_patch || cfg->body_rule != BODY_NODE ||
-      s->nfield < 2)
+  if (cfg->normals == NORMALS_AUTO || cfg->normal_window > 0 ||
+      cfg->normal_patch || cfg->body_rule != BODY_NODE || s->nfield < 2)
     return NULL;
   for (i = 0; i < s->nbody; i++) {
     const body *a = &s->bodies[i];
@@ -385,6 +391,26 @@ const char *sim_normals_advice(const sim *s) {
     }
   }
   return NULL;
+}
+
+/* A field is flat when every body on it is (body.flat: seeded from a
+** shape with flat faces, no bond); the flat faces' normals (NORMALS_AUTO,
+** contact.c) are wanted where two flat fields meet and one is free. */
+void sim_flat(sim *s) {
+  int32_t i;
+  int nflat = 0, nfree = 0;
+  for (i = 0; i < s->nfield; i++) s->fflat[i] = 1;
+  for (i = 0; i < s->nbody; i++)
+    if (!s->bodies[i].flat) s->fflat[s->bodies[i].field] = 0;
+  for (i = 0; i < s->nbody; i++) { /* each flat field counted once */
+    int32_t f = s->bodies[i].field;
+    if (s->fflat[f] != 1) continue;
+    s->fflat[f] = 2;
+    nflat++;
+    nfree += s->fdriven[f] < 0;
+  }
+  for (i = 0; i < s->nfield; i++) s->fflat[i] = s->fflat[i] == 2;
+  s->flatpair = nflat >= 2 && nfree >= 1;
 }
 
 /* what the numerics took (the transfer's smoothing and the nodes'
@@ -748,6 +774,7 @@ int sim_step(sim *s) {
   par_run(wk->par, reset_part, &s->g);
   grid_reset_slots(&s->g);
   p2g_plan(s);
+  sim_flat(s);
   s->g.moments = cfg->normals == NORMALS_PLANE;
   s->g.cohesive = s->fcoh >= 0;
   if ((s->nfield > 1 || s->ndriven) && (p2g_mark(s) || contact_prepare(s))) {

@@ -48,15 +48,20 @@ enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
 extern const char *const transfer_names[];
 /* how contact normals are taken (contact.c): each field's mass or volume
 ** gradient against the others', the larger volume gradient's direction
-** for both sides, or the least-squares plane between the particles */
+** for both sides, or the least-squares plane between the particles;
+** NORMALS_AUTO (the default): the mass gradient, but where only fields
+** of flat-faced bodies meet (sim.fflat) the larger volume gradient over
+** NORMAL_FLAT_WINDOW cells with one normal per contact patch */
 enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
-                    NORMALS_PLANE };
+                    NORMALS_PLANE, NORMALS_AUTO };
 /* contact where a bond was cut (contact.c): only once the opening measured
 ** from the sides' displacements since the cut closes, or by the separation
 ** check like any contact */
 enum release_kind { RELEASE_OPEN, RELEASE_CONTACT };
 /* the widest window the normals may take (cells each way) */
 #define NORMAL_WINDOW_MAX 8
+/* NORMALS_AUTO's window between flat faces (contact.c says why 4) */
+#define NORMAL_FLAT_WINDOW 4
 #define NSIDES (2 * DIM)
 /* doubles per wall column wall_spring.c works in: the columns' sums,
 ** the springs moved, the patches' slides and the springs (struct spr) */
@@ -286,6 +291,10 @@ typedef struct sim {
   pairlaw *laws;     /* overrides per field pair, sorted (a < b) */
   int nlaw, lawcap;
   unsigned char *flaw; /* per field: 1 if some override names it */
+  unsigned char *fflat; /* per field: 1 if all its bodies are flat
+                           (body.flat), set at each step (sim_flat) */
+  int flatpair;      /* two flat fields, one of them free: NORMALS_AUTO
+                        then takes the flat faces' normals (sim_flat) */
   int fbond;         /* particle field "bond" (strength), -1: no bonds */
   int fcoh, fopen;   /* particle fields "cut_strength" and "opening"
                         (bond_gc > 0): the strength the particle's bond had
@@ -389,6 +398,23 @@ const char *sim_wall_advice(const sim *s);
 ** contact normals taken node by node, which hold a block sliding on a
 ** flat body at its corners (docs/verification.md), or NULL */
 const char *sim_normals_advice(const sim *s);
+/* the slot gradients p2g gathers for the normals: the mass gradient
+** (sg) and the volume gradient (sv), which bonds need too (bond.c
+** gathers it when p2g did not) */
+static inline int sim_mass_grad(const sim *s) {
+  return s->cfg.normals == NORMALS_MASS || s->cfg.normals == NORMALS_AUTO;
+}
+static inline int sim_vol_grad(const sim *s) {
+  return s->cfg.normals == NORMALS_AUTO ? s->flatpair
+                                        : s->cfg.normals != NORMALS_MASS;
+}
+/* NORMALS_AUTO takes one normal per patch where flat fields meet */
+static inline int sim_flat_patches(const sim *s) {
+  return s->cfg.normals == NORMALS_AUTO && s->flatpair;
+}
+/* fflat and flatpair from the bodies as they stand (each step, and
+** before a question that maps the particles) */
+void sim_flat(sim *s);
 /* the step the next sim_step will take (fixed or CFL) */
 double sim_next_dt(sim *s);
 /* gravity's potential from pe = -sum m g.x over the wrapped positions:

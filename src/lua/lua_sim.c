@@ -287,7 +287,8 @@ static const char *const wallopt[] = {"node", "patch", "couple", "penalty", "spr
 static const char *const bodyopt[] = {"node", "patch", NULL};
 static const char *const releaseopt[] = {"open", "contact", NULL};
 static const char *const tractionopt[] = {"mixture", "fit", NULL};
-static const char *const normalsopt[] = {"mass", "volume", "maxvolume", "plane", NULL};
+/* in enum normals_kind's order */
+static const char *const normalsopt[] = {"mass", "volume", "maxvolume", "plane", "auto", NULL};
 
 int lsim_new(lua_State *L) {
   static const char *const keys[] = {"domain", "cell", "ppc", "shape",
@@ -481,7 +482,7 @@ int lsim_new(lua_State *L) {
                    "the budget does not close (a disc dropped on a floor, APIC: "
                    "residual 4 %% of E0 at 8 and 16 cells)", what);
     s->cfg.body_rule = chk_option(L, 1, what, "body_contact", BODY_NODE, bodyopt);
-    s->cfg.normals = chk_option(L, 1, what, "normals", NORMALS_MASS, normalsopt);
+    s->cfg.normals = chk_option(L, 1, what, "normals", NORMALS_AUTO, normalsopt);
     s->cfg.gap_step = chk_option(L, 1, what, "contact_gap", s->cfg.gap_step, gapopt);
     s->cfg.release = chk_option(L, 1, what, "bond_release", RELEASE_OPEN, releaseopt);
     s->cfg.bond_fit = chk_option(L, 1, what, "bond_traction", 0, tractionopt);

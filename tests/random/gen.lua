@@ -52,7 +52,7 @@ local function options(r, cfg)
     if cfg.wall_contact == "spring" then cfg.wall_band = pick(r, {0, 1, 2, 4}) end
   end
   cfg.body_contact = pick(r, {"node", "patch"})
-  cfg.normals = pick(r, {"mass", "volume", "maxvolume", "plane"})
+  cfg.normals = pick(r, {"mass", "volume", "maxvolume", "plane", "auto"})
   cfg.normal_window = pick(r, {0, 0, 2, 4})
   cfg.normal_patch = r() < 0.3
   cfg.contact_gap = pick(r, {"touch", "step"})

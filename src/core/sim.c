@@ -386,8 +386,9 @@ const char *sim_normals_advice(const sim *s) {
                "flat body slides at 0.6-2 % of the analytic acceleration "
                "at 8-32 cells per side on B-splines, 85 % on linear hats; "
                "normals = \"maxvolume\", normal_window = 4, normal_patch = "
-               "true is within 1.6 % along the grid, at 30 and 45 degrees "
-               "(docs/verification.md, contact: normals)";
+               "true is within 1.6 % along the grid, at 30 and 45 degrees, "
+               "and the default, normals = \"auto\", takes it where flat "
+               "faces meet (docs/verification.md, contact: normals)";
     }
   }
   return NULL;

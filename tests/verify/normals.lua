@@ -488,11 +488,6 @@ do
     local m = C.discs {cells = 20, method = "mass", offset = 0.2}
     V.holds("glancing discs, 20 cells: the defaults are mass node by node to the bit",
       c.total == m.total and c.orbit == m.orbit and c.spin == m.spin, c.total)
-    -- 3-D: the block extruded along a periodic z, along the grid
-    local d = C.block {k = 8, method = "default", mu = 0, shape = "bspline2", dim = 3}
-    local e = C.block {k = 8, method = "mass", mu = 0, shape = "bspline2", dim = 3}
-    V.below("3-D, along the grid, mu 0, 8 cells, the defaults: |a / a_ref - 1|", math.abs(d.a - 1), 0.02)
-    V.info("3-D, the same with mass normals node by node: a / a_ref (held)", e.a)
   end
   -- scenes with flat faces meeting node by node, named, get a warning
   -- naming the remedy; the defaults, round bodies, bonded ones, two
@@ -532,6 +527,12 @@ do
       V.below(what .. ": hop / L", r.hop, 0.005)
     end
   end
+  -- 3-D: the block extruded along a periodic z, along the grid (last:
+  -- the shapes made after a 3-D scene are 3-D until a 2-D one is made)
+  local d = C.block {k = 8, method = "default", mu = 0, shape = "bspline2", dim = 3}
+  local e = C.block {k = 8, method = "mass", mu = 0, shape = "bspline2", dim = 3}
+  V.below("3-D, along the grid, mu 0, 8 cells, the defaults: |a / a_ref - 1|", math.abs(d.a - 1), 0.02)
+  V.info("3-D, the same with mass normals node by node: a / a_ref (held)", e.a)
 end
 
 -- The contact options read back from the simulation (sim.wall_contact

@@ -782,7 +782,7 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
   int ns = 0, k, d, bonds = s->fbond >= 0, cuts = 0, cohesive = s->fcoh >= 0;
   if (rec) wk->cbody[k0] = -1;
   if (M <= s->mcut) return;
-  if (cfg->body_rule == BODY_PATCH && wk->cplab && wk->cplab[n] >= 0) {
+  if (sim_body_patches(s) && wk->cplab && wk->cplab[n] >= 0) {
     booked(s, k0, 0, 0, 0, 0, 0, rec); /* contact_patch.c's */
     return;
   }
@@ -965,7 +965,7 @@ int contact_prepare(sim *s) {
   if (grow((void **)&wk->crec, &nc, g->nshared, CREC * sizeof *wk->crec) ||
       grow((void **)&wk->cbody, &wk->cnodecap, g->nshared, sizeof *wk->cbody))
     return -1;
-  if (s->cfg.body_rule == BODY_PATCH || s->cfg.normal_patch || sim_flat_patches(s)) {
+  if (sim_body_patches(s) || s->cfg.normal_patch || sim_flat_patches(s)) {
     /* contact_patch.c: a label per node, -1 between steps, and a list */
     if (!wk->cplab) {
       size_t i;
@@ -1037,13 +1037,13 @@ void contact_apply(sim *s) {
   s->bond_area = 0;
   if (s->fbond >= 0 && cfg->bond_fit) par_run(wk->par, fits_part, s);
   /* the patches first (contact_patch.c; their room is contact_prepare's) */
-  if (cfg->body_rule == BODY_PATCH && wk->cplab) contact_patches(s);
+  if (sim_body_patches(s) && wk->cplab) contact_patches(s, 0);
   if (wk->cnodecap >= g->nshared) {
     par_run(wk->par, apply_part, s);
     apply_sums(s);
   } else
     for (k = 0; k < g->nshared; k++) node(s, k, g->q, g->sq, 0);
   if (s->fbond >= 0) bond_sums(s);
-  if (cfg->body_rule == BODY_PATCH && wk->cplab)
+  if (sim_body_patches(s) && wk->cplab)
     for (k = 0; k < g->nshared; k++) wk->cplab[g->shared[k]] = -1;
 }

@@ -117,8 +117,11 @@ static int pass(sim *s, int32_t a, int32_t b, int drv, const double v[DIM],
 
 /* The patch of nodes list[0..len): its fields' slots are found again
 ** per node (pair() orders them the same way).  Returns 0 if applied (or
-** no contact: nothing acts), 1 if left to the node rule. */
-static int patch(sim *s, const int32_t *list, size_t len) {
+** no contact: nothing acts), 1 if left to the node rule.  dry: a
+** question between steps (sim:contacts(), diag_contact.c): the impulses
+** are applied and kept per slot (sfi, sni) but nothing is booked, heated
+** or added to a drive's force. */
+static int patch(sim *s, const int32_t *list, size_t len, int dry) {
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   double Ma = 0, Mb = 0, Pa[DIM] = {0}, Pb[DIM] = {0}, N[DIM] = {0}, W = 0;
@@ -226,13 +229,14 @@ static int patch(sim *s, const int32_t *list, size_t len) {
       fric += contact_lose(g, b, v, x, g->sfi);
       imp += contact_lose(g, b, v, y, g->sni);
     }
+    if (dry) continue;
     s->e.friction += fric;
     s->e.impact += imp;
     sl[0] = a;
     sl[1] = b;
     if (s->heat) heat_contact(s, sl, 2, drv ? b : -1, fric);
   }
-  if (drv) {
+  if (drv && !dry) {
     double *F = s->bodies[s->fdriven[fb]].force;
     for (d = 0; d < DIM; d++) F[d] += Fs[d] / s->dt;
     s->e.boundary += work;
@@ -288,17 +292,25 @@ static void label(sim *s) {
 }
 
 /* Marks the nodes it takes in s->work.cplab (>= 0: taken, contact.c's
-** node() leaves them), -1 elsewhere among the shared nodes */
-void contact_patches(sim *s) {
+** node() leaves them), -1 elsewhere among the shared nodes.  Under
+** body_contact = "auto" only the patches where a flat field meets one
+** that is not (sim.fflat: a round body on a flat one) are taken: two
+** round bodies lose more energy per patch head on, and a block sliding
+** with friction on a flat body rocks (one velocity change cannot move
+** its pressure to the leading edge). */
+void contact_patches(sim *s, int dry) {
   grid *g = &s->g;
   int32_t *lab = s->work.cplab, *list = s->work.cplist;
+  const int mixed = s->cfg.body_rule != BODY_PATCH;
   size_t k, np = 0, i, len;
   label(s);
   for (k = 0; k < g->nshared; k++) {
-    int32_t n = g->shared[k];
+    int32_t n = g->shared[k], a, b;
     if (lab[n] != -2) continue;
     len = flood(s, n, (int32_t)np, list);
-    if (patch(s, list, len)) /* no plane: the node rule's */
+    pair(s, n, &a, &b);
+    if ((mixed && s->fflat[g->sfield[a]] == s->fflat[g->sfield[b]]) ||
+        patch(s, list, len, dry)) /* the node rule's */
       for (i = 0; i < len; i++) lab[list[i]] = -1;
     np++;
   }

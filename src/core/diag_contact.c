@@ -5,8 +5,13 @@
 ** (between steps); the step itself is untouched, so a run that never
 ** asks pays nothing.  The records, one per slot in contact, are sorted
 ** by pair and node and added in that order: the sums do not depend on
-** the thread count that built the grid.
+** the thread count that built the grid.  Where contact acts per patch
+** (body_contact = "patch", or "auto" between a round body and a flat
+** one) the patches are applied dry (contact_patch.c) and each slot's
+** normal impulse there is what it receives, so the forces are the ones
+** the step applies.
 */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "diag_contact.h"
@@ -89,6 +94,29 @@ static void node_recs(const sim *s, size_t k, rec *rc, size_t *nr) {
   }
 }
 
+/* the records of shared node k where a patch took it: each free slot's
+** normal impulse (sni, the patch's normal part and any deep stop) */
+static void patch_recs(const sim *s, size_t k, rec *rc, size_t *nr) {
+  const grid *g = &s->g;
+  int32_t n = g->shared[k], sl, q;
+  int d;
+  for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
+    double y2 = 0;
+    rec *e;
+    if (s->fdriven[g->sfield[sl]] >= 0 || !(g->sm[sl] > s->mcut)) continue;
+    for (d = 0; d < DIM; d++) y2 += g->sni[d][sl] * g->sni[d][sl];
+    if (!(y2 > 0)) continue;
+    for (q = g->head[n]; q >= 0 && q == sl; q = g->snext[q]) {}
+    if (q < 0) continue;
+    e = &rc[(*nr)++];
+    e->r = g->sfield[sl];
+    e->o = g->sfield[q];
+    e->k = k;
+    e->fn = sqrt(y2) / s->dt;
+    for (d = 0; d < DIM; d++) e->f[d] = g->sni[d][sl] / s->dt;
+  }
+}
+
 int diag_contacts(sim *s, contact_pair **out, size_t *n) {
   const grid *g = &s->g;
   rec *rc = NULL;
@@ -106,7 +134,16 @@ int diag_contacts(sim *s, contact_pair **out, size_t *n) {
   if (!rc || !fbody) goto oom;
   for (k = 0; k < (size_t)s->nfield; k++) fbody[k] = -1;
   for (k = (size_t)s->nbody; k-- > 0;) fbody[s->bodies[k].field] = (int32_t)k;
-  for (k = 0; k < g->nshared; k++) node_recs(s, k, rc, &nr);
+  if (sim_body_patches(s) && s->work.cplab) {
+    int32_t *lab = s->work.cplab;
+    contact_patches(s, 1);
+    for (k = 0; k < g->nshared; k++) {
+      if (lab[g->shared[k]] >= 0) patch_recs(s, k, rc, &nr);
+      else node_recs(s, k, rc, &nr);
+      lab[g->shared[k]] = -1;
+    }
+  } else
+    for (k = 0; k < g->nshared; k++) node_recs(s, k, rc, &nr);
   if (!nr) goto done;
   qsort(rc, nr, sizeof *rc, cmp);
   if (!(cp = malloc(nr * sizeof *cp))) goto oom;

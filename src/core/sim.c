@@ -27,6 +27,7 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
   s->t_end = 1.0;
   s->cfg.gap_check = 1;
   s->cfg.normals = NORMALS_AUTO;
+  s->cfg.body_rule = BODY_AUTO;
   s->cfg.normal_window = 0;
   s->cfg.normal_patch = 0;
   s->cfg.bond_default = INFINITY;
@@ -371,7 +372,7 @@ const char *sim_normals_advice(const sim *s) {
   const sim_cfg *cfg = &s->cfg;
   int32_t i, j;
   if (cfg->normals == NORMALS_AUTO || cfg->normal_window > 0 ||
-      cfg->normal_patch || cfg->body_rule != BODY_NODE || s->nfield < 2)
+      cfg->normal_patch || cfg->body_rule == BODY_PATCH || s->nfield < 2)
     return NULL;
   for (i = 0; i < s->nbody; i++) {
     const body *a = &s->bodies[i];
@@ -399,7 +400,7 @@ const char *sim_normals_advice(const sim *s) {
 ** contact.c) are wanted where two flat fields meet and one is free. */
 void sim_flat(sim *s) {
   int32_t i;
-  int nflat = 0, nfree = 0;
+  int nflat = 0, nfree = 0, nround = 0;
   for (i = 0; i < s->nfield; i++) s->fflat[i] = 1;
   for (i = 0; i < s->nbody; i++)
     if (!s->bodies[i].flat) s->fflat[s->bodies[i].field] = 0;
@@ -410,8 +411,10 @@ void sim_flat(sim *s) {
     nflat++;
     nfree += s->fdriven[f] < 0;
   }
+  for (i = 0; i < s->nbody; i++) nround += !s->fflat[s->bodies[i].field];
   for (i = 0; i < s->nfield; i++) s->fflat[i] = s->fflat[i] == 2;
   s->flatpair = nflat >= 2 && nfree >= 1;
+  s->flatmix = nflat >= 1 && nround >= 1;
 }
 
 /* what the numerics took (the transfer's smoothing and the nodes'

@@ -39,8 +39,10 @@ enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 ** column of nodes at the wall (wall_spring.c) */
 enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY, WALL_SPRING };
 /* how contact between two bodies acts: node by node (contact.c) or one
-** velocity change per side over each contact patch (contact_patch.c) */
-enum body_rule { BODY_NODE, BODY_PATCH };
+** velocity change per side over each contact patch (contact_patch.c);
+** BODY_AUTO (the default): per patch where a flat-faced body meets one
+** that is not (sim.fflat), node by node elsewhere */
+enum body_rule { BODY_NODE, BODY_PATCH, BODY_AUTO };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
 ** grid velocity and an affine velocity field per particle (g2p.c) */
 enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
@@ -295,6 +297,8 @@ typedef struct sim {
                            (body.flat), set at each step (sim_flat) */
   int flatpair;      /* two flat fields, one of them free: NORMALS_AUTO
                         then takes the flat faces' normals (sim_flat) */
+  int flatmix;       /* a flat field and one that is not: BODY_AUTO then
+                        takes their patches (sim_flat) */
   int fbond;         /* particle field "bond" (strength), -1: no bonds */
   int fcoh, fopen;   /* particle fields "cut_strength" and "opening"
                         (bond_gc > 0): the strength the particle's bond had
@@ -408,6 +412,12 @@ static inline int sim_vol_grad(const sim *s) {
   return s->cfg.normals == NORMALS_AUTO ? s->flatpair
                                         : s->cfg.normals != NORMALS_MASS;
 }
+/* whether contact_patch.c takes patches this step: body_contact =
+** "patch", or "auto" where a flat field meets another */
+static inline int sim_body_patches(const sim *s) {
+  return s->cfg.body_rule == BODY_PATCH ||
+         (s->cfg.body_rule == BODY_AUTO && s->flatmix);
+}
 /* NORMALS_AUTO takes one normal per patch where flat fields meet */
 static inline int sim_flat_patches(const sim *s) {
   return s->cfg.normals == NORMALS_AUTO && s->flatpair;
@@ -472,8 +482,11 @@ void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
 int contact_prepare(sim *s);   /* contact.c: room for its records */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
-void contact_patches(sim *s);  /* contact_patch.c: ... per contact patch
-                                  (body_contact = "patch"), first */
+void contact_patches(sim *s, int dry); /* contact_patch.c: ... per
+                                  contact patch (body_contact = "patch",
+                                  or "auto" where a flat body meets one
+                                  that is not), first; dry: kept per slot,
+                                  not booked (sim:contacts()) */
 void contact_patch_normals(sim *s); /* contact_patch.c: each patch's nodes
                                   given its mean normal (normal_patch) */
 /* contact.c: the first half of what slot sl's impulse c dissipates,

@@ -284,7 +284,8 @@ int lsim_env_threads(void) {
 static const char *const remapopt[] = {"auto", "hold", "free", NULL};
 static const char *const gapopt[] = {"touch", "step", NULL};
 static const char *const wallopt[] = {"node", "patch", "couple", "penalty", "spring", NULL};
-static const char *const bodyopt[] = {"node", "patch", NULL};
+/* in enum body_rule's order */
+static const char *const bodyopt[] = {"node", "patch", "auto", NULL};
 static const char *const releaseopt[] = {"open", "contact", NULL};
 static const char *const tractionopt[] = {"mixture", "fit", NULL};
 /* in enum normals_kind's order */
@@ -481,7 +482,7 @@ int lsim_new(lua_State *L) {
                    "on the particles' motion, the springs' work on the nodes', and "
                    "the budget does not close (a disc dropped on a floor, APIC: "
                    "residual 4 %% of E0 at 8 and 16 cells)", what);
-    s->cfg.body_rule = chk_option(L, 1, what, "body_contact", BODY_NODE, bodyopt);
+    s->cfg.body_rule = chk_option(L, 1, what, "body_contact", BODY_AUTO, bodyopt);
     s->cfg.normals = chk_option(L, 1, what, "normals", NORMALS_AUTO, normalsopt);
     s->cfg.gap_step = chk_option(L, 1, what, "contact_gap", s->cfg.gap_step, gapopt);
     s->cfg.release = chk_option(L, 1, what, "bond_release", RELEASE_OPEN, releaseopt);

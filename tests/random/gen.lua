@@ -51,7 +51,7 @@ local function options(r, cfg)
     cfg.wall_stiffness = pick(r, {0.5, 1, 2})
     if cfg.wall_contact == "spring" then cfg.wall_band = pick(r, {0, 1, 2, 4}) end
   end
-  cfg.body_contact = pick(r, {"node", "patch"})
+  cfg.body_contact = pick(r, {"node", "patch", "auto"})
   cfg.normals = pick(r, {"mass", "volume", "maxvolume", "plane", "auto"})
   cfg.normal_window = pick(r, {0, 0, 2, 4})
   cfg.normal_patch = r() < 0.3

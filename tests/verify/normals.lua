@@ -481,12 +481,13 @@ do
   -- nothing for it)
   do
     local a = C.block {k = 8, method = "default", mu = 0.2, deg = 45, shape = "bspline2"}
-    local b = C.block {k = 8, method = "maxvolume/4+patch", mu = 0.2, deg = 45, shape = "bspline2"}
-    V.holds("block at 45 degrees, mu 0.2, 8 cells: the defaults' acceleration is maxvolume/4+patch's to the bit",
+    local b = C.block {k = 8, method = "maxvolume/4+patch", mu = 0.2, deg = 45, shape = "bspline2",
+                       body_contact = "node"}
+    V.holds("block at 45 degrees, mu 0.2, 8 cells: the defaults' acceleration is maxvolume/4+patch's node by node to the bit",
       a.a == b.a and a.rot == b.rot, a.a)
     local c = C.discs {cells = 20, offset = 0.2}
-    local m = C.discs {cells = 20, method = "mass", offset = 0.2}
-    V.holds("glancing discs, 20 cells: the defaults are mass node by node to the bit",
+    local m = C.discs {cells = 20, method = "mass", offset = 0.2, body_contact = "node"}
+    V.holds("glancing discs, 20 cells: the defaults are mass normals and the node rule to the bit",
       c.total == m.total and c.orbit == m.orbit and c.spin == m.spin, c.total)
   end
   -- scenes with flat faces meeting node by node, named, get a warning
@@ -548,7 +549,7 @@ do
   local dom = {x = {0, 1}, y = {0, 1}}
   local d = mvmpm.sim {domain = dom, cell = 0.1}
   V.holds("defaults: " .. opts(d),
-    opts(d) == "node node auto 0 false touch true auto mixture 0.0 open")
+    opts(d) == "node auto auto 0 false touch true auto mixture 0.0 open")
   local s = mvmpm.sim {domain = dom, cell = 0.1, wall_contact = "patch", body_contact = "patch",
     normals = "plane", normal_window = 4, normal_patch = true, contact_gap = "step",
     wall_remap = "hold", bond_traction = "fit", bond_length = 0.2, bond_release = "contact",

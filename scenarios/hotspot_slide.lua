@@ -30,9 +30,10 @@
 -- the block rocks and its corners strike the slab (measured at 10 cells,
 -- 10 us: the block's spin swings through +-6e4 rad/s, the impacts take
 -- 0.14 J/m, and the leading corner reaches 1310 K); with one normal per
--- contact patch (normal_patch, the default here) the spin stays within
--- 2e4 rad/s, the impacts take 1.4e-3 J/m, and the friction work is mu m g
--- times the distance slid to 1-3 %.
+-- contact patch (the engine's default between flat faces, normals =
+-- "auto", and normal_patch here) the spin stays within 3e4 rad/s, the
+-- impacts take 1.4e-3 J/m, and the friction work is mu m g times the
+-- distance slid to 1-3 %.
 --
 -- Snapshots carry temperature, heat (J deposited per particle) and
 -- heat_friction; hotspots_NNNNNN.csv lists the regions above

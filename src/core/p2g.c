@@ -43,7 +43,10 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
   ** stores to the other arrays */
   double *restrict gm = g->m;
   double *restrict gp[DIM], *restrict gf[DIM];
-  const int bymass = sim_mass_grad(s), byvol = sim_vol_grad(s);
+  /* one gradient through one pointer; the volume gradient beside the
+  ** mass gradient only where "auto" meets flat faces (both) */
+  const int bymass = sim_mass_grad(s), both = bymass && sim_vol_grad(s);
+  double *const *sgrad = bymass ? g->sg : g->sv;
   const int plane = what != P2G_FORCE && shared && cfg->normals == NORMALS_PLANE;
   const int mass = what != P2G_FORCE, force = what != P2G_MASS;
   const double *C[NTENS] = {NULL};
@@ -65,11 +68,13 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     double x[DIM], v0[DIM], F[NTENS], sv[DIM][DIM];
     double mp = ps->m[i], J, V;
     int32_t f = bd[ps->body[i]].field;
+    double wg;
     int k;
     for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; v0[a] = ps->v[a][i]; }
     for (a = 0; a < NTENS; a++) F[a] = ps->F[a][i];
     J = vec_det(F);
     V = J * ps->vol0[i];
+    wg = bymass ? mp : V; /* the normals' weight */
     for (a = 0; a < DIM; a++)
       for (b = 0; b < DIM; b++) sv[a][b] = V * ps->s[vec_sym(a, b)][i];
     if (split &&
@@ -108,8 +113,8 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
         g->sm[sl] += wm;
         for (a = 0; a < DIM; a++) {
           g->sp[a][sl] += wm * v[a];
-          if (bymass) g->sg[a][sl] += mp * st.dw[a][k];
-          if (byvol) g->sv[a][sl] += V * st.dw[a][k];
+          sgrad[a][sl] += wg * st.dw[a][k];
+          if (both) g->sv[a][sl] += V * st.dw[a][k];
         }
         if (plane) { /* moments of r / h, weighted w V */
           double wv = w * V, u[DIM];

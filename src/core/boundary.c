@@ -143,13 +143,17 @@ static void wall_column(sim *s, int k, int line, int first, size_t j) {
   double imp[DIM];
   int e;
   unsigned char *act = sd->acted + (size_t)(line - first) * sd->next + j;
-  double gap = cfg->gap_check && !sd->mirror ? -sd->ext[j] : 0;
+  const int check = cfg->gap_check && !sd->mirror;
+  double gap;
   *act = 0;
   if (g->m[n] <= s->mcut) return;
-  if (gap > 0 && !cfg->gap_step) return;
+  if (check && -sd->ext[j] > 0 && !cfg->gap_step) return; /* none reaches */
   if (g->head[n] < 0) {
     int a;
-    if (wall_skips(s, node_field(s, n))) return;
+    int32_t f = node_field(s, n);
+    if (wall_skips(s, f)) return;
+    gap = check ? -sim_wall_reach(sd, j, f) : 0;
+    if (gap > 0 && !cfg->gap_step) return;
     a = wall_node(s, sd, d, sign, g->m[n], g->p, mom, (size_t)n, 0, gap, imp,
                   g->fi, g->ni);
     *act = (unsigned char)a;
@@ -157,6 +161,9 @@ static void wall_column(sim *s, int k, int line, int first, size_t j) {
   }
   for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
     if (g->sm[sl] <= s->mcut || wall_skips(s, g->sfield[sl])) continue;
+    /* each field by its own reach: a body beside one that touches */
+    gap = check ? -sim_wall_reach(sd, j, g->sfield[sl]) : 0;
+    if (gap > 0 && !cfg->gap_step) continue;
     if (wall_node(s, sd, d, sign, g->sm[sl], g->sp, smom, (size_t)sl, 1, gap, imp,
                   g->sfi, g->sni))
       *act = 1;
@@ -457,13 +464,17 @@ static int patch_touch(const sim *s, int k, size_t j, int first, int last) {
   return 0;
 }
 
-/* whether the material of a patch touches the wall somewhere */
-static int patch_gap(const sim *s, int k, const int32_t *cols, int len) {
+/* whether field f's material touches the wall somewhere in a patch (the
+** patch joins the columns of every field: two bodies side by side whose
+** near-wall bands meet are one patch, and each is judged by its own
+** reach) */
+static int patch_gap(const sim *s, int k, const int32_t *cols, int len,
+                     int32_t f) {
   const sim_cfg *cfg = &s->cfg;
   int a;
   if (!cfg->gap_check) return 1;
   for (a = 0; a < len; a++)
-    if (s->sides[k].ext[cols[a]] >= 0) return 1;
+    if (sim_wall_reach(&s->sides[k], (size_t)cols[a], f) >= 0) return 1;
   return 0;
 }
 
@@ -554,7 +565,9 @@ static void patch_deep(sim *s, int k, int first, int last) {
       if (g->m[n] <= s->mcut) continue;
       if (g->head[n] < 0) {
         double dn = sign * (g->q[d][n] - g->m[n] * sd->v[d]);
-        if (!(dn > 0) || wall_skips(s, node_field(s, n))) continue;
+        int32_t f = node_field(s, n);
+        if (!(dn > 0) || wall_skips(s, f) || !(sim_wall_reach(sd, j, f) > tol))
+          continue;
         g->q[d][n] -= sign * dn;
         wall_impact(s, g->m[n], g->p[d][n], sd->v[d], sd->v[d], -sign * dn,
                     &g->ni[d][n]);
@@ -565,7 +578,9 @@ static void patch_deep(sim *s, int k, int first, int last) {
       }
       for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) {
         double dn;
-        if (g->sm[sl] <= s->mcut || wall_skips(s, g->sfield[sl])) continue;
+        if (g->sm[sl] <= s->mcut || wall_skips(s, g->sfield[sl]) ||
+            !(sim_wall_reach(sd, j, g->sfield[sl]) > tol))
+          continue;
         dn = sign * (g->sq[d][sl] - g->sm[sl] * sd->v[d]);
         if (!(dn > 0)) continue;
         g->sq[d][sl] -= sign * dn;
@@ -592,11 +607,9 @@ static void wall_patches(sim *s, int k, int first, int last) {
   for (p = 0; p < np; p++) {
     const int32_t *c = cols + off[p];
     int len = off[p + 1] - off[p];
-    if (patch_gap(s, k, c, len)) {
-      int32_t f = -1;
-      while ((f = patch_next_field(s, k, c, len, first, last, f)) >= 0)
-        patch_field(s, k, c, len, first, last, f);
-    }
+    int32_t f = -1;
+    while ((f = patch_next_field(s, k, c, len, first, last, f)) >= 0)
+      if (patch_gap(s, k, c, len, f)) patch_field(s, k, c, len, first, last, f);
   }
   if (cfg->gap_check) patch_deep(s, k, first, last);
 }

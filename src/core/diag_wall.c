@@ -18,12 +18,18 @@ static double press(const sim *s, double m, double q, double vw, double sign,
                     double gap) {
   double dn = sign * (q - m * vw);
   if (!(m > s->mcut) || !(dn > 0)) return 0;
+  if (gap > 0 && !s->cfg.gap_step) return 0;
   if (gap > 0) {
     double reach = dn / m * s->dt;
     if (!(reach > gap)) return 0;
     dn *= 1 - gap / reach;
   }
   return dn;
+}
+
+/* the gap between field f's material and the wall at column j */
+static double gap_of(const sim *s, const side *sd, size_t j, int32_t f) {
+  return s->cfg.gap_check ? -sim_wall_reach(sd, j, f) : 0;
 }
 
 int diag_wall(sim *s, int k, wall_press **out, size_t *n) {
@@ -49,13 +55,16 @@ int diag_wall(sim *s, int k, wall_press **out, size_t *n) {
   for (line = first; line <= last; line++)
     for (j = 0; j < sd->next; j++) {
       int32_t nd = grid_face_node(g, d, line, j), sl;
-      double gap = s->cfg.gap_check ? -sd->ext[j] : 0, dn = 0;
+      double dn = 0;
       int i[DIM];
-      if (!(g->m[nd] > s->mcut) || (gap > 0 && !s->cfg.gap_step)) continue;
-      if (g->head[nd] < 0) dn = press(s, g->m[nd], g->q[d][nd], sd->v[d], sign, gap);
-      else
+      if (!(g->m[nd] > s->mcut)) continue;
+      if (g->head[nd] < 0)
+        dn = press(s, g->m[nd], g->q[d][nd], sd->v[d], sign,
+                   gap_of(s, sd, j, s->nfield > 1 || s->ndriven ? g->owner[nd] : 0));
+      else /* each field by its own reach, as boundary.c */
         for (sl = g->head[nd]; sl >= 0; sl = g->snext[sl])
-          dn += press(s, g->sm[sl], g->sq[d][sl], sd->v[d], sign, gap);
+          dn += press(s, g->sm[sl], g->sq[d][sl], sd->v[d], sign,
+                      gap_of(s, sd, j, g->sfield[sl]));
       if (!(dn > 0)) continue;
       grid_ijk(g, nd, i);
       for (e = 0; e < DIM; e++)

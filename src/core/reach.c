@@ -13,15 +13,43 @@
 #include "sim.h"
 #include "stencil.h"
 
-/* particle i's reach toward the walls, into ext (one array per side,
+/* Per column of a wall the largest reach, the field it is of, and the
+** largest reach of the other fields: two bodies side by side on a wall
+** share the columns between them, and the one a cell above the wall
+** must not be stopped because its neighbour touches (a disc held a cell
+** above the floor in a pile, under the patch rule).  Three arrays per
+** side: r1, f1, r2. */
+typedef struct wreach {
+  double *r1[NSIDES], *r2[NSIDES];
+  int32_t *f1[NSIDES];
+} wreach;
+
+/* the reach r of field f at column j */
+static void wreach_put(const wreach *w, int k, size_t j, int32_t f, double r) {
+  if (f == w->f1[k][j]) {
+    if (r > w->r1[k][j]) w->r1[k][j] = r;
+  } else if (r > w->r1[k][j]) { /* a new top: the old one is the others' */
+    w->r2[k][j] = w->r1[k][j];
+    w->r1[k][j] = r;
+    w->f1[k][j] = f;
+  } else if (r > w->r2[k][j])
+    w->r2[k][j] = r;
+}
+
+double sim_wall_reach(const side *sd, size_t j, int32_t f) {
+  return f == sd->efld[j] ? sd->ext[j] : sd->ext2[j];
+}
+
+/* particle i's reach toward the walls, into w (one array per side,
 ** per column of the wall plane): every column whose node the particle's
 ** stencil reaches along the plane's axes */
-static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
+static void walls(const sim *s, size_t i, const wreach *w) {
   const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   const particles *ps = &s->ps;
   const double l = cfg->lp * g->h;
   const int nw = shape_width(cfg->shape);
+  int32_t f = -1;
   int k;
   for (k = 0; k < NSIDES; k++) {
     const side *sd = &s->sides[k];
@@ -31,6 +59,7 @@ static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
     xw = hi ? g->hi[d] : g->lo[d];
     r = (hi ? ps->x[d][i] - xw : xw - ps->x[d][i]) + l;
     if (r < -1.5 * g->h) continue; /* not near this wall */
+    if (f < 0) f = s->bodies[ps->body[i]].field;
     /* the first stencil node along each axis of the plane */
     for (e = 0; e < DIM; e++) {
       double xi;
@@ -54,8 +83,7 @@ static void walls(const sim *s, size_t i, double *const ext[NSIDES]) {
         in &= ix[e] >= 0 && ix[e] < g->n[e];
       }
       if (in) {
-        size_t j = grid_face_index(g, d, ix);
-        if (r > ext[k][j]) ext[k][j] = r;
+        wreach_put(w, k, grid_face_index(g, d, ix), f, r);
       }
     }
   }
@@ -146,40 +174,64 @@ static void shared_span(void *arg, size_t i0, size_t i1, int t, int pass) {
 }
 
 /* The walls, part t of the particles: part 0 into the sides' own
-** arrays, the others each into a copy of its own (s->work.wext), merged after:
-** a maximum does not depend on the order it is taken in */
+** arrays, the others each into a copy of its own (s->work.wext, wefld),
+** merged after: a maximum does not depend on the order it is taken in */
 static void walls_part(void *arg, int t, int nparts) {
   sim *s = arg;
   sim_work *wk = &s->work;
-  double *ext[NSIDES], *w = t > 0 ? wk->wext + (size_t)(t - 1) * wk->wextn : NULL;
+  double *w = t > 0 ? wk->wext + (size_t)(t - 1) * 2 * wk->wextn : NULL;
+  int32_t *wf = t > 0 ? wk->wefld + (size_t)(t - 1) * wk->wextn : NULL;
+  wreach r;
   size_t i, i0, i1, j;
   int k;
   for (k = 0; k < NSIDES; k++) {
     side *sd = &s->sides[k];
-    ext[k] = sd->ext;
+    r.r1[k] = sd->ext;
+    r.r2[k] = sd->ext2;
+    r.f1[k] = sd->efld;
     if (t > 0) {
-      ext[k] = w;
-      w += sd->next;
+      r.r1[k] = w;
+      r.r2[k] = w + sd->next;
+      r.f1[k] = wf;
+      w += 2 * sd->next;
+      wf += sd->next;
     }
     if (sd->kind == SIDE_WALL)
-      for (j = 0; j < sd->next; j++) ext[k][j] = -1e300;
+      for (j = 0; j < sd->next; j++) {
+        r.r1[k][j] = r.r2[k][j] = -1e300;
+        r.f1[k][j] = -1;
+      }
   }
   par_range(s->ps.n, t, nparts, &i0, &i1);
-  for (i = i0; i < i1; i++) walls(s, i, ext);
+  for (i = i0; i < i1; i++) walls(s, i, &r);
 }
 
+/* two columns' summaries: the larger top, and the others' largest (the
+** smaller top's field differs from the larger's, or they are one) */
 static void walls_merge(sim *s) {
   sim_work *wk = &s->work;
   const double *w = wk->wext;
+  const int32_t *wf = wk->wefld;
   int t, k;
   for (t = 1; t < par_threads(wk->par); t++)
     for (k = 0; k < NSIDES; k++) {
       side *sd = &s->sides[k];
+      const double *r1 = w, *r2 = w + sd->next;
       size_t j;
       if (sd->kind == SIDE_WALL)
-        for (j = 0; j < sd->next; j++)
-          if (w[j] > sd->ext[j]) sd->ext[j] = w[j];
-      w += sd->next;
+        for (j = 0; j < sd->next; j++) {
+          if (wf[j] == sd->efld[j]) {
+            if (r1[j] > sd->ext[j]) sd->ext[j] = r1[j];
+            if (r2[j] > sd->ext2[j]) sd->ext2[j] = r2[j];
+          } else if (r1[j] > sd->ext[j]) {
+            sd->ext2[j] = sd->ext[j] > r2[j] ? sd->ext[j] : r2[j];
+            sd->ext[j] = r1[j];
+            sd->efld[j] = wf[j];
+          } else if (r1[j] > sd->ext2[j])
+            sd->ext2[j] = r1[j];
+        }
+      w += 2 * sd->next;
+      wf += sd->next;
     }
 }
 

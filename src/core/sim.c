@@ -62,13 +62,16 @@ int sim_init(sim *s, const double lo[DIM], const double hi[DIM], double h,
     s->sides[k].next = grid_face_count(&s->g, d);
     if (s->sides[k].next > most) most = s->sides[k].next;
     s->sides[k].ext = malloc(s->sides[k].next * sizeof(double));
+    s->sides[k].ext2 = malloc(s->sides[k].next * sizeof(double));
+    s->sides[k].efld = malloc(s->sides[k].next * sizeof(int32_t));
     /* the wall plane and the ghost planes beyond it */
     s->sides[k].acted = calloc((size_t)(s->g.pad + 1) * s->sides[k].next, 1);
     s->sides[k].hm = calloc((size_t)(s->g.pad + 2) * s->sides[k].next, sizeof(double));
     s->sides[k].dl = calloc(s->sides[k].next, sizeof(double));
     s->sides[k].ph = calloc(s->sides[k].next * DIM, sizeof(double));
     s->sides[k].son = calloc(s->sides[k].next, 1);
-    if (!s->sides[k].ext || !s->sides[k].acted || !s->sides[k].hm ||
+    if (!s->sides[k].ext || !s->sides[k].ext2 || !s->sides[k].efld ||
+        !s->sides[k].acted || !s->sides[k].hm ||
         !s->sides[k].dl || !s->sides[k].ph || !s->sides[k].son)
       return -1;
   }
@@ -84,6 +87,8 @@ void sim_free(sim *s) {
   particles_free(&s->ps);
   for (k = 0; k < NSIDES; k++) {
     free(s->sides[k].ext);
+    free(s->sides[k].ext2);
+    free(s->sides[k].efld);
     free(s->sides[k].acted);
     free(s->sides[k].dl);
     free(s->sides[k].ph);
@@ -102,6 +107,7 @@ void sim_free(sim *s) {
   marks_free(&s->work.marks);
   free(s->work.red);
   free(s->work.wext);
+  free(s->work.wefld);
   free(s->work.pflag);
   free(s->work.wpatch);
   free(s->work.wcarry);
@@ -123,7 +129,9 @@ void sim_set_threads(sim *s, int n) {
   par_free(s->work.par);
   s->work.par = NULL;
   free(s->work.wext); /* sized by the thread count */
+  free(s->work.wefld);
   s->work.wext = NULL;
+  s->work.wefld = NULL;
   s->cfg.threads = n;
 }
 
@@ -144,13 +152,17 @@ int sim_prepare(sim *s) {
       return -1;
     }
   }
-  if (!wk->wext && par_threads(wk->par) > 1) { /* reach.c: walls */
+  if ((!wk->wext || !wk->wefld) && par_threads(wk->par) > 1) { /* reach.c */
     int k;
+    free(wk->wext);
+    free(wk->wefld);
     wk->wextn = 0;
     for (k = 0; k < NSIDES; k++) wk->wextn += s->sides[k].next;
-    wk->wext = malloc((size_t)(par_threads(wk->par) - 1) * wk->wextn *
+    wk->wext = malloc((size_t)(par_threads(wk->par) - 1) * 2 * wk->wextn *
                      sizeof *wk->wext);
-    if (!wk->wext) {
+    wk->wefld = malloc((size_t)(par_threads(wk->par) - 1) * wk->wextn *
+                       sizeof *wk->wefld);
+    if (!wk->wext || !wk->wefld) {
       snprintf(s->err, sizeof s->err, "out of memory for partial sums");
       return -1;
     }

@@ -80,6 +80,8 @@ typedef struct side {
   double v[DIM];     /* wall velocity (tangential part moves the wall) */
   double *ext;       /* reach of material toward the wall per column (node
                      ** of the wall plane, grid_face_node's order) */
+  int32_t *efld;     /* ... the field that reach is of, and ext2 the reach */
+  double *ext2;      /* of the other fields there (sim_wall_reach) */
   size_t next;       /* columns: grid_face_count of the side's axis */
   unsigned char *acted; /* per column of the wall plane and the ghost
                         ** planes: the wall acted there this step */
@@ -242,7 +244,9 @@ typedef struct sim_work {
   unsigned char *pflag; /* wall_penalty.c: per node, bit d set where a
                      ** spring pushed along axis d this step */
   double *wext;      /* reach.c: each thread but the first's copy of the
-                        sides' reach arrays, wextn doubles each */
+                        sides' reach arrays, 2 wextn doubles each (ext,
+                        ext2), and in wefld wextn fields (efld) */
+  int32_t *wefld;
   size_t wextn;
   double *wcarry;    /* wall_spring.c: WSPRING_W per column of a side */
   int32_t *wpatch;   /* boundary.c: room to find a wall's contact patches
@@ -480,6 +484,9 @@ void xpic(sim *s);             /* xpic.c: f -> the XPIC(m) correction c */
 void solve_remap(sim *s);      /* solve.c: p -> remapped velocity */
 void contact_normals(sim *s);  /* contact.c: normals at shared nodes */
 void reach(sim *s);            /* reach.c: surfaces, for the gap check */
+/* how far field f's material passes side sd's wall line at column j (an
+** upper bound where a third field reaches the column) */
+double sim_wall_reach(const side *sd, size_t j, int32_t f);
 int contact_prepare(sim *s);   /* contact.c: room for its records */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
 void contact_patches(sim *s, int dry); /* contact_patch.c: ... per

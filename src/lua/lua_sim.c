@@ -405,7 +405,8 @@ int lsim_new(lua_State *L) {
       if (sim_init(&ls->s, lo, hi, h, pdim, shape, ppc))
         luaL_error(L, "sim: %s", ls->s.err);
       for (k = 0; k < NSIDES; k++) {
-        double *ext = ls->s.sides[k].ext;
+        double *ext = ls->s.sides[k].ext, *ext2 = ls->s.sides[k].ext2;
+        int32_t *efld = ls->s.sides[k].efld;
         unsigned char *acted = ls->s.sides[k].acted;
         double *hm = ls->s.sides[k].hm, *dl = ls->s.sides[k].dl;
         double *ph = ls->s.sides[k].ph;
@@ -413,6 +414,8 @@ int lsim_new(lua_State *L) {
         size_t next = ls->s.sides[k].next;
         ls->s.sides[k] = keep[k];
         ls->s.sides[k].ext = ext;
+        ls->s.sides[k].ext2 = ext2;
+        ls->s.sides[k].efld = efld;
         ls->s.sides[k].acted = acted;
         ls->s.sides[k].hm = hm;
         ls->s.sides[k].dl = dl;

@@ -68,7 +68,8 @@ void book_finish(sim *s) {
   const int split = sim_lossy(cfg);
   if (walls) {
     s->e.friction += half(g->nnodes, g->m, s->mcut, v, g->fi);
-    if (split) s->e.impact += half(g->nnodes, g->m, s->mcut, v, g->ni);
+    if (split || s->wsplit) s->e.impact += half(g->nnodes, g->m, s->mcut, v, g->ni);
+    s->wsplit = 0;
   }
   s->e.friction += half(g->nslot, g->sm, s->mcut, sv, g->sfi);
   s->e.impact += half(g->nslot, g->sm, s->mcut, sv, g->sni);

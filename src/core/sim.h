@@ -36,8 +36,11 @@ enum wall_remap { WALL_REMAP_AUTO, WALL_REMAP_HOLD, WALL_REMAP_FREE };
 ** line by a couple on the first node line inside (boundary.c);
 ** WALL_PENALTY: a spring on each particle that passes the wall line,
 ** frictionless walls only (wall_penalty.c); WALL_SPRING: a spring on each
-** column of nodes at the wall (wall_spring.c) */
-enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY, WALL_SPRING };
+** column of nodes at the wall (wall_spring.c); WALL_AUTO: the patch rule
+** for the fields that are not flat (sim.fflat) at a wall with friction,
+** the node rule elsewhere (boundary.c) */
+enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY, WALL_SPRING,
+                 WALL_AUTO };
 /* how contact between two bodies acts: node by node (contact.c) or one
 ** velocity change per side over each contact patch (contact_patch.c);
 ** BODY_AUTO (the default): per patch where a flat-faced body meets one
@@ -301,6 +304,8 @@ typedef struct sim {
                            (body.flat), set at each step (sim_flat) */
   int flatpair;      /* two flat fields, one of them free: NORMALS_AUTO
                         then takes the flat faces' normals (sim_flat) */
+  int wsplit;        /* boundary.c: the patch rule kept normal impulses in
+                     ** g.ni this step, for book.c's second half */
   int flatmix;       /* a flat field and one that is not: BODY_AUTO then
                         takes their patches (sim_flat) */
   int fbond;         /* particle field "bond" (strength), -1: no bonds */

@@ -283,7 +283,8 @@ int lsim_env_threads(void) {
 ** constructor accepts and what sim.<option> reads back */
 static const char *const remapopt[] = {"auto", "hold", "free", NULL};
 static const char *const gapopt[] = {"touch", "step", NULL};
-static const char *const wallopt[] = {"node", "patch", "couple", "penalty", "spring", NULL};
+static const char *const wallopt[] = {"node", "patch", "couple", "penalty", "spring", "auto",
+                                      NULL};
 /* in enum body_rule's order */
 static const char *const bodyopt[] = {"node", "patch", "auto", NULL};
 static const char *const releaseopt[] = {"open", "contact", NULL};

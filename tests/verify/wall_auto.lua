@@ -75,8 +75,10 @@ end
 -- dropped from a cell above the floor while the first rests on it; each
 -- is judged by its own reach, so the second falls to the floor too (the
 -- reach was taken per column over every body, and under the patch rule
--- the second hovered a cell above the floor as long as the first
--- touched it).
+-- the second hovered 1.7 cells above the first on B-splines as long as
+-- the first touched the floor).  Both ring on the floor (their heights
+-- part by up to 0.4 cells at moments), so the mean over t = 2 .. 4 is
+-- held to half a cell.
 V.case "two discs side by side: each meets the floor by its own reach"
 do
   for _, rule in ipairs {"node", "patch"} do
@@ -88,10 +90,13 @@ do
       local m = mvmpm.elastic {K = 200, G = 100, density = 1}
       local a = sim:body {shape = mvmpm.disk {center = {0.25, 0.12}, radius = 0.12}, material = m}
       local b = sim:body {shape = mvmpm.disk {center = {0.57, 0.12 + h}, radius = 0.12}, material = m}
-      sim:run(3)
-      local ya, yb = a:diag().y, b:diag().y
-      V.below(string.format("%s, %s: the dropped disc's centre above the resting one's, in cells", rule, shape),
-              math.abs(yb - ya) / h, 0.2)
+      local sum = 0
+      for t = 2, 4, 0.25 do
+        sim:run(t)
+        sum = sum + (b:diag().y - a:diag().y) / h
+      end
+      V.below(string.format("%s, %s: the dropped disc's centre above the resting one's, mean over t = 2 .. 4, cells",
+                            rule, shape), math.abs(sum / 9), 0.5)
     end
   end
 end

@@ -781,6 +781,7 @@ void boundary_normal_set(sim *s, double *const a[DIM],
     int d = k / 2, line, first, last;
     double v = vel ? sd->v[d] : 0.0;
     size_t j;
+    int flat = 0; /* "auto" with patches: the node rule's part is the flat fields' */
     if (sd->kind != SIDE_WALL) continue;
     if (sim_penalty_side(s, k)) continue;
     /* the springs' columns are not held (nothing stopped them); where a
@@ -788,31 +789,24 @@ void boundary_normal_set(sim *s, double *const a[DIM],
     if (cfg->wall_rule != WALL_SPRING && side_patches(s, k)) {
       patch_normal_side(s, k, a, sa, v);
       if (cfg->wall_rule != WALL_AUTO) continue;
-      /* "auto": the flat fields where the node rule acted */
-      grid_wall_lines(g, k, &first, &last);
-      for (line = first; line <= last; line++)
-        for (j = 0; j < sd->next; j++) {
-          int32_t n = grid_face_node(g, d, line, j), sl;
-          if (!sd->acted[(size_t)(line - first) * sd->next + j]) continue;
-          if (g->head[n] < 0) {
-            if (!patch_takes(s, k, node_field(s, n))) a[d][n] = v;
-            continue;
-          }
-          for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
-            if (!patch_takes(s, k, g->sfield[sl])) {
-              a[d][n] += (v - sa[d][sl]) * g->sm[sl] / g->m[n];
-              sa[d][sl] = v;
-            }
-        }
-      continue;
+      flat = 1;
     }
     grid_wall_lines(g, k, &first, &last);
     for (line = first; line <= last; line++)
       for (j = 0; j < sd->next; j++) {
         int32_t n = grid_face_node(g, d, line, j), sl;
         if (!sd->acted[(size_t)(line - first) * sd->next + j]) continue;
-        a[d][n] = v;
-        for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) sa[d][sl] = v;
+        if (!flat) {
+          a[d][n] = v;
+          for (sl = g->head[n]; sl >= 0; sl = g->snext[sl]) sa[d][sl] = v;
+        } else if (g->head[n] < 0) {
+          if (!patch_takes(s, k, node_field(s, n))) a[d][n] = v;
+        } else
+          for (sl = g->head[n]; sl >= 0; sl = g->snext[sl])
+            if (!patch_takes(s, k, g->sfield[sl])) {
+              a[d][n] += (v - sa[d][sl]) * g->sm[sl] / g->m[n];
+              sa[d][sl] = v;
+            }
       }
   }
 }

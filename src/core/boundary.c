@@ -142,10 +142,11 @@ static int wall_skips(const sim *s, int32_t f) {
 ** patch puts the normal force at the patch's mass centre, and a block
 ** sliding with friction rocks, as between bodies: contact_patch.c).
 ** Frictionless walls keep the node rule: the bounce's restitution at 16
-** cells is 0.892 node by node, 0.824 per patch. */
+** cells is 0.892 node by node, 0.824 per patch.  So do the schemes
+** sim_auto_patch() leaves out (sim.h says why). */
 static int patch_takes(const sim *s, int k, int32_t f) {
   if (s->cfg.wall_rule != WALL_AUTO) return 1;
-  return s->sides[k].mu > 0 && !s->fflat[f];
+  return s->sides[k].mu > 0 && !s->fflat[f] && sim_auto_patch(&s->cfg);
 }
 
 /* whether side k acts per patch on some field this step */
@@ -154,7 +155,8 @@ static int side_patches(const sim *s, int k) {
   int32_t f;
   if (s->sides[k].mirror) return 0; /* it holds every node on it */
   if (cfg->wall_rule == WALL_PATCH || cfg->wall_rule == WALL_COUPLE) return 1;
-  if (cfg->wall_rule != WALL_AUTO || !(s->sides[k].mu > 0)) return 0;
+  if (cfg->wall_rule != WALL_AUTO || !(s->sides[k].mu > 0) || !sim_auto_patch(cfg))
+    return 0;
   for (f = 0; f < s->nfield; f++)
     if (!s->fflat[f]) return 1;
   return 0;

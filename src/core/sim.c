@@ -362,9 +362,20 @@ const char *sim_wall_advice(const sim *s) {
            "at 10 to 19 cells per diameter, friction booking negative "
            "work; \"patch\" does not (docs/verification.md, contact: "
            "rolling and spin-up)";
-  if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, penalty */
+  /* "auto" is the node rule under the schemes sim_auto_patch() leaves
+  ** out (sim.h), and the patch rule for round bodies elsewhere */
+  if (s->cfg.wall_rule == WALL_AUTO && !sim_auto_patch(&s->cfg))
+    return "walls with friction under the node rule (wall_contact = "
+           "\"auto\" takes it under this transfer and shape) hardly turn "
+           "round bodies: a disc thrown along a floor slides where it would "
+           "roll, and friction takes 2.3, 1.3, 1.13 times the rigid disc's "
+           "work at 8, 16, 32 cells per diameter; pure FLIP on B-splines or "
+           "GIMP, or wall_contact = \"patch\", 1.08, 1.02, 1.001, but the "
+           "patch's impacts make energy under APIC and linear FLIP "
+           "(docs/verification.md, friction work against the rigid disc)";
+  if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, auto, penalty */
   return "walls with friction under the node rule (wall_contact = "
-         "\"node\", the default) hardly turn round bodies: a disc thrown "
+         "\"node\") hardly turn round bodies: a disc thrown "
          "along a floor slides where it would roll, and friction takes "
          "2.3, 1.3, 1.13 times the rigid disc's work at 8, 16, 32 cells "
          "per diameter; wall_contact = \"patch\" 1.08, 1.02, 1.001 "

@@ -465,7 +465,7 @@ int lsim_new(lua_State *L) {
                                     1, PAR_MAX, CHK_INT));
     ls->fields_single = chk_option(L, 1, what, "fields", 0, fieldsopt);
     s->cfg.wall_remap = chk_option(L, 1, what, "wall_remap", WALL_REMAP_AUTO, remapopt);
-    s->cfg.wall_rule = chk_option(L, 1, what, "wall_contact", WALL_NODE, wallopt);
+    s->cfg.wall_rule = chk_option(L, 1, what, "wall_contact", WALL_AUTO, wallopt);
     s->cfg.wall_stiffness = chk_num(L, 1, what, "wall_stiffness",
                                     s->cfg.wall_rule == WALL_SPRING ? 1 : 2, 0.01, 16, 0);
     s->cfg.wall_band = (int)chk_num(L, 1, what, "wall_band", 2, 0, 4, CHK_INT);

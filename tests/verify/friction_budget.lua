@@ -7,10 +7,19 @@
 --   friction work = sum F dt . slip: the friction force from the disc's
 --     momentum along the floor, on its contact point's slip vx + omega R
 --     (a rigid disc that does not spin up: mu m g (v0 T - mu g T^2 / 2)
---     = 0.42 m), within 5 %
+--     = 0.42 m), within 5 % under the node rule, whose friction acts at
+--     the contact's nodes
 --   residual = E0 + W_b - W_f - W_transfer - W_impact - E, below 2 % of
---     the energy put in (E0 + W_b), every scheme, every resolution
--- and the friction work of the schemes is printed side by side.  Then the
+--     the energy put in (E0 + W_b), every scheme, every resolution, under
+--     the defaults and under the node rule
+-- and the friction work of the schemes is printed side by side.  Under
+-- the defaults (wall_contact = "auto") pure FLIP on GIMP and B-splines
+-- takes the patch rule, whose friction acts at its band's mass centre, a
+-- fraction of a cell above the contact: the disc turns, and the work
+-- booked exceeds F . slip by about F omega y0 (y0 that height).  There
+-- the excess must fall with refinement, and the work must come nearer
+-- the rigid disc's (1/2 m v0^2 I / (I + m R^2), lua/mvmpm/slide.lua) than
+-- the node rule's does.  Then the
 -- same disc dropped onto the floor (v = (1, -2) from y = 1.5): each
 -- impact's normal loss at the nodes is booked as `impact`, and the
 -- residual is held below 2 % in every scheme at 16 cells
@@ -26,24 +35,49 @@ local function order(e)
   return 0 / 0
 end
 
+-- the schemes under which the default wall rule ("auto") is the patch
+-- rule for a round body at a wall with friction (src/core/sim.h)
+local function patched(sc)
+  return sc.transfer == "flip" and (sc.flip or 1) == 1 and sc.shape ~= "linear"
+end
+
 V.case "sliding disc (mu 0.3, v0 1): friction work against F . slip, budget"
 local at = {}
 for _, sc in ipairs(S.schemes) do
-  local errs = {}
+  local errs, errd = {}, {}
   for k, c in ipairs(cells) do
     local r = S.run {cells = c, scheme = sc, mu = mu, T = 2, n = 40}
     local e = r.e
     local put = e.initial + e.boundary_work
-    errs[k] = math.abs(e.dissipated / r.model - 1)
+    errd[k] = math.abs(e.dissipated / r.model - 1)
     at[c] = at[c] or {}
     at[c][#at[c] + 1] = e.dissipated / r.m
-    V.near(string.format("%s: friction / model, %d cells", S.name(sc), c),
-           e.dissipated / r.model, 1, 0.05)
     V.below(string.format("%s: |residual| / (E0 + W_b), %d cells", S.name(sc), c),
             math.abs(e.residual) / put, 0.02)
     V.info(string.format("%s: transfer / (E0 + W_b), %d cells", S.name(sc), c), e.transfer / put)
+    local n = r
+    if patched(sc) then
+      n = S.run {cells = c, scheme = sc, mu = mu, T = 2, n = 40, wall_contact = "node"}
+      local en = n.e
+      V.info(string.format("%s: friction / model, %d cells (the defaults: per patch)", S.name(sc), c),
+             e.dissipated / r.model)
+      V.below(string.format("%s: |friction / rigid disc's - 1|, %d cells, per patch below node by node", S.name(sc), c),
+              math.abs(e.dissipated / r.rigid - 1), math.abs(en.dissipated / n.rigid - 1))
+      V.info(string.format("%s:   node by node: friction / rigid disc's", S.name(sc)), en.dissipated / n.rigid)
+      V.below(string.format("%s: node by node: |residual| / (E0 + W_b), %d cells", S.name(sc), c),
+              math.abs(en.residual) / (en.initial + en.boundary_work), 0.02)
+    end
+    errs[k] = math.abs(n.e.dissipated / n.model - 1)
+    V.near(string.format("%s: friction / model, %d cells%s", S.name(sc), c,
+                         patched(sc) and ", node by node" or ""),
+           n.e.dissipated / n.model, 1, 0.05)
   end
   V.info(string.format("%s: friction / model - 1, observed order", S.name(sc)), order(errs))
+  if patched(sc) then
+    V.info(string.format("%s: the defaults: friction / model - 1, observed order", S.name(sc)), order(errd))
+    V.below(string.format("%s: the defaults: |friction / model - 1| at %d cells below its value at %d",
+                          S.name(sc), cells[3], cells[1]), errd[3], errd[1])
+  end
 end
 -- the spin-up differs between the schemes (the lattice flat the disc
 -- rocks on, tests/verify/rolling.lua), and with it the slip distance:
@@ -64,9 +98,10 @@ end
 -- Cauchy form, which made energy in the compressed contact, read 0.1 -
 -- 1 % there and 2.4 - 2.7 % under APIC, which now closes to 0.2 %.  So 8
 -- and 12 cells are printed; at the goal's resolution, 16 cells, the goal
--- (2 %) is printed as met or not (B-splines under FLIP 2.5 %, flip 0.99
--- on linear hats 2.0 %), and every scheme is held to 3 % and below its
--- 8-cell residual (or 0.5 %).
+-- (2 %) is printed as met or not (flip 0.99 on linear hats 2.0 %; B-splines
+-- under FLIP 2.5 % node by node, 0.3 % per patch, which the defaults now
+-- take there), and every scheme is held to 3 % and below its 8-cell
+-- residual (or 0.5 %).
 local res8 = {}
 for _, c in ipairs {8, 12, 16} do
   V.case(string.format("disc dropped on the frictional floor (v = (1, -2) from y = 1.5), %d cells: budget", c))

@@ -549,7 +549,7 @@ do
   local dom = {x = {0, 1}, y = {0, 1}}
   local d = mvmpm.sim {domain = dom, cell = 0.1}
   V.holds("defaults: " .. opts(d),
-    opts(d) == "node auto auto 0 false touch true auto mixture 0.0 open")
+    opts(d) == "auto auto auto 0 false touch true auto mixture 0.0 open")
   local s = mvmpm.sim {domain = dom, cell = 0.1, wall_contact = "patch", body_contact = "patch",
     normals = "plane", normal_window = 4, normal_patch = true, contact_gap = "step",
     wall_remap = "hold", bond_traction = "fit", bond_length = 0.2, bond_release = "contact",

@@ -23,7 +23,8 @@ local P = mvmpm.params {
   transfer = "default", -- or "flip", "apic" (gimp or bspline2), "xpic"
   xpic = 2,            -- XPIC's order (2 or 3)
   separation = true,   -- contact only once surfaces meet
-  wall_contact = "node", -- or "patch": the wall acts per contact patch;
+  wall_contact = "default", -- or "node": each wall node stopped alone;
+                         -- "patch": the wall acts per contact patch;
                          -- "couple": ... with friction at the wall line
                          -- "penalty": the walls push the particles that
                          -- reach them; "spring": each column of nodes at
@@ -50,7 +51,7 @@ local sim = mvmpm.sim {
   t_end = P.t_end,
   sides = {"wall", friction = P.friction},
   contact = {separation = P.separation},
-  wall_contact = P.wall_contact,
+  wall_contact = opt(P.wall_contact),
   wall_stiffness = opt(P.wall_stiffness),
   contact_gap = opt(P.contact_gap),
 }

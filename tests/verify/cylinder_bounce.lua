@@ -211,6 +211,31 @@ for _, shape in ipairs {"linear", "gimp"} do
   end
 end
 
+-- The defaults: B-splines, pure FLIP and wall_contact = "auto", which
+-- takes the patch rule for the disc at the frictional walls, against the
+-- node rule on the same shape.  Printed against the targets (10 % at 8
+-- cells, 5 % at 16); asserted: the defaults closer to the model than the
+-- node rule at both impacts, at 8 and 16 cells, and the budget's
+-- residual within 5 % of E0.
+V.case "frictional bounce (mu = 0.1), the defaults (B-splines, FLIP, auto) against the node rule"
+for _, c in ipairs {8, 16} do
+  local q1, q2, res = patched(c, nil, "default")
+  local n1, n2 = patched(c, "bspline2", "node")
+  local tol = c == 8 and 0.10 or 0.05
+  for i, q in ipairs {q1, q2} do
+    local e = math.abs(1 - q)
+    V.info(string.format("defaults: spin after impact %d / rigid model, %d cells: error %.3f, target %g: %s",
+                         i, c, e, tol, e <= tol and "met" or "NOT met"), q)
+  end
+  V.info(string.format("node rule: spin after impact 1 / rigid model, %d cells", c), n1)
+  V.info(string.format("node rule: spin after impact 2 / rigid model, %d cells", c), n2)
+  V.below(string.format("defaults closer to the model than the node rule, impact 1, %d cells", c),
+          math.abs(1 - q1), math.abs(1 - n1))
+  V.below(string.format("defaults closer to the model than the node rule, impact 2, %d cells", c),
+          math.abs(1 - q2), math.abs(1 - n2))
+  V.near(string.format("defaults: energy budget residual / E0, %d cells", c), res, 0, 0.05)
+end
+
 -- wall_contact = "couple": the patch rule with sliding friction put at the
 -- wall line (a couple on the first node line inside, docs/algorithm.md
 -- §9).  On the patch alone friction acts at the mass centre of the

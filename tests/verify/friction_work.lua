@@ -18,7 +18,7 @@
 --     APIC on every shape (asserted);
 --   "couple": spins the disc up at the friction torque's rate but books
 --     5-12 % less (printed; its error falls);
---   "node" (the default): the nodes ahead of the contact point, stopped
+--   "node" (named; the default, "auto", is the patch rule here): the nodes ahead of the contact point, stopped
 --     one by one, turn the disc back, so it slides on and friction takes
 --     2.3 times W at 8 cells, 1.3 at 16, 1.13 at 32: such a scene is
 --     warned at its first run (sim.wall_advice);
@@ -84,7 +84,7 @@ do
   V.below("couple: friction work's error falls 16 -> 32 cells", math.abs(r[3].w - 1), math.abs(r[2].w - 1))
 end
 
-V.case "the node rule (the default): the disc does not turn; the scene is warned"
+V.case "the node rule (named): the disc does not turn; the scene is warned"
 do
   -- 32 cells (1.13) in studies/friction_work.lua
   local r = series("node", flip, {8, 16})
@@ -95,6 +95,14 @@ do
           r[1].sim.wall_advice ~= nil and r[1].sim.wall_advice:find("patch") ~= nil, 0, r[1].sim.wall_advice)
   local p = S.run {cells = 8, scheme = flip, mu = mu, T = 0.1, n = 1, wall_contact = "patch"}
   V.holds("no such warning under the patch rule", p.sim.wall_advice == nil)
+  -- the defaults: "auto" is the patch rule under pure FLIP on B-splines,
+  -- the node rule (warned of) under APIC (src/core/sim.h)
+  local d = S.run {cells = 8, scheme = {}, mu = mu, T = 0.1, n = 1}
+  V.holds("no such warning under the defaults (B-splines, FLIP: per patch)", d.sim.wall_advice == nil,
+          0, d.sim.wall_advice)
+  local a = S.run {cells = 8, scheme = {shape = "bspline2", transfer = "apic"}, mu = mu, T = 0.1, n = 1}
+  V.holds("warned under the defaults with APIC (the node rule there)",
+          a.sim.wall_advice ~= nil and a.sim.wall_advice:find("auto", 1, true) ~= nil, 0, a.sim.wall_advice)
 end
 
 V.case "XPIC: the disc hardly turns (printed; 32 cells in studies/friction_work.lua)"

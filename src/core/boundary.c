@@ -773,19 +773,6 @@ static void patch_normal_side(sim *s, int k, double *const a[DIM],
   }
 }
 
-/* whether the remap holds the patches' mean normal velocity: not under
-** the lossy transfers (sim_lossy) unless wall_remap = "hold" is named.
-** They give the particles the grid's velocity, not FLIP's increment, so
-** the remap keeps no approach to take away; held, the patch's normal
-** impulse was booked on a motion the particles did not make (a disc
-** dropped on a frictionless floor, B-spline APIC: -2.5 / -2.6 % of the
-** energy put in unbooked at 8 / 16 cells, not held +0.27 / +0.29 %; a
-** disc resting on a floor: -0.42 / -0.54 % of m g R by t = 20, not held
-** zero to five digits, its kinetic energy decaying either way) */
-static int patch_held(const sim_cfg *cfg) {
-  return !sim_lossy(cfg) || cfg->wall_remap == WALL_REMAP_HOLD;
-}
-
 void boundary_normal_set(sim *s, double *const a[DIM],
                          double *const sa[DIM], int vel) {
   const sim_cfg *cfg = &s->cfg;
@@ -802,7 +789,7 @@ void boundary_normal_set(sim *s, double *const a[DIM],
     /* the springs' columns are not held (nothing stopped them); where a
     ** column fell back on the node rule, its acted nodes are */
     if (cfg->wall_rule != WALL_SPRING && side_patches(s, k)) {
-      if (patch_held(cfg)) patch_normal_side(s, k, a, sa, v);
+      patch_normal_side(s, k, a, sa, v);
       if (cfg->wall_rule != WALL_AUTO) continue;
       flat = 1;
     }

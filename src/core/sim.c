@@ -369,11 +369,10 @@ const char *sim_wall_advice(const sim *s) {
            "\"auto\" takes it under this transfer and shape) hardly turn "
            "round bodies: a disc thrown along a floor slides where it would "
            "roll, and friction takes 2.3, 1.3, 1.13 times the rigid disc's "
-           "work at 8, 16, 32 cells per diameter; under pure FLIP or APIC "
-           "on B-splines or GIMP \"auto\" takes the patch rule, 1.08, 1.02, "
-           "1.001 (wall_contact = \"patch\" names it for any scheme; its "
-           "impacts make energy under linear FLIP) (docs/verification.md, "
-           "friction work against the rigid disc)";
+           "work at 8, 16, 32 cells per diameter; pure FLIP on B-splines or "
+           "GIMP, or wall_contact = \"patch\", 1.08, 1.02, 1.001, but the "
+           "patch's impacts make energy under APIC and linear FLIP "
+           "(docs/verification.md, friction work against the rigid disc)";
   if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, auto, penalty */
   return "walls with friction under the node rule (wall_contact = "
          "\"node\") hardly turn round bodies: a disc thrown "

@@ -233,17 +233,15 @@ static inline int sim_lossy(const sim_cfg *cfg) {
 }
 
 /* whether wall_contact = "auto" takes the patch rule for round bodies at
-** walls with friction: under pure FLIP and APIC on GIMP and B-splines.
-** Elsewhere it is the node rule: under linear FLIP the patch's impacts
-** made energy, more as the grid was refined (a disc dropped on a
-** frictional floor, -1.1 / -2.6 / -5.8 / -9.6 % of the energy put in at
-** 8 / 16 / 24 / 32 cells), and XPIC and the FLIP/PIC blend stop a body's
-** spin in the transfer, so that the patch's torque buys little there
-** (boundary.c) */
+** walls with friction: under pure FLIP on GIMP and B-splines.  Elsewhere
+** it is the node rule: the patch's normal impulses made energy there (a
+** disc dropped on a frictional floor, residual -2.5 to -2.8 % of the
+** energy put in at 8 to 32 cells under B-spline APIC, node by node
+** within 0.3 %; linear FLIP -1.1 / -2.6 / -5.8 / -9.6 % at 8 / 16 / 24
+** / 32 cells), and XPIC and the FLIP/PIC blend stop a body's spin in
+** the transfer, so that the patch's torque buys little (boundary.c) */
 static inline int sim_auto_patch(const sim_cfg *cfg) {
-  if (cfg->shape == SHAPE_LINEAR) return 0;
-  return cfg->transfer == TRANSFER_APIC ||
-         (cfg->transfer == TRANSFER_FLIP && cfg->flip >= 1);
+  return !sim_lossy(cfg) && cfg->shape != SHAPE_LINEAR;
 }
 
 /*

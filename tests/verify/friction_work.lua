@@ -96,12 +96,12 @@ do
   local p = S.run {cells = 8, scheme = flip, mu = mu, T = 0.1, n = 1, wall_contact = "patch"}
   V.holds("no such warning under the patch rule", p.sim.wall_advice == nil)
   -- the defaults: "auto" is the patch rule under pure FLIP on B-splines,
-  -- the node rule (warned of) under XPIC (src/core/sim.h)
+  -- the node rule (warned of) under APIC (src/core/sim.h)
   local d = S.run {cells = 8, scheme = {}, mu = mu, T = 0.1, n = 1}
   V.holds("no such warning under the defaults (B-splines, FLIP: per patch)", d.sim.wall_advice == nil,
           0, d.sim.wall_advice)
-  local a = S.run {cells = 8, scheme = {shape = "bspline2", transfer = "xpic"}, mu = mu, T = 0.1, n = 1}
-  V.holds("warned under the defaults with XPIC (the node rule there)",
+  local a = S.run {cells = 8, scheme = {shape = "bspline2", transfer = "apic"}, mu = mu, T = 0.1, n = 1}
+  V.holds("warned under the defaults with APIC (the node rule there)",
           a.sim.wall_advice ~= nil and a.sim.wall_advice:find("auto", 1, true) ~= nil, 0, a.sim.wall_advice)
 end
 

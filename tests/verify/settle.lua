@@ -21,14 +21,18 @@ local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 
 local g = 1
-local function pile(y0, shape)
-  local floor = {"wall", friction = 0.5}
-  local side = {"wall", friction = 0}
-  local sim = mvmpm.sim {domain = {x = {0, 0.75}, y = {y0, y0 + 1}}, cell = 0.05,
-                         gravity = {0, -g}, shape = shape, t_end = 100,
-                         sides = {left = side, right = side, bottom = floor, top = floor}}
+-- a box of the given width under gravity, friction 0.5 between bodies,
+-- and the elastic discs' material
+local function box(y0, shape, width, sides)
+  local sim = mvmpm.sim {domain = {x = {0, width}, y = {y0, y0 + 1}}, cell = 0.05,
+                         gravity = {0, -g}, shape = shape, t_end = 100, sides = sides}
   sim:contact {friction = 0.5}
-  local m = mvmpm.elastic {K = 200, G = 100, density = 1}
+  return sim, mvmpm.elastic {K = 200, G = 100, density = 1}
+end
+
+local function pile(y0, shape)
+  local floor, side = {"wall", friction = 0.5}, {"wall", friction = 0}
+  local sim, m = box(y0, shape, 0.75, {left = side, right = side, bottom = floor, top = floor})
   local R = 0.123 -- a little play between the discs and the sides
   local h = 2 * R * math.sin(math.rad(60)) -- between the rows at rest
   local c = {{0.125, 0.13}, {0.375, 0.13}, {0.625, 0.13}, -- each row has a gap to fall
@@ -45,11 +49,7 @@ end
 -- thousandths apart from the start make the run chaotic at once)
 local function drop(y0, shape)
   local wall = {"wall", friction = 0.5}
-  local sim = mvmpm.sim {domain = {x = {0, 1}, y = {y0, y0 + 1}}, cell = 0.05,
-                         gravity = {0, -g}, shape = shape, t_end = 100,
-                         sides = {left = wall, right = wall, bottom = wall, top = wall}}
-  sim:contact {friction = 0.5}
-  local m = mvmpm.elastic {K = 200, G = 100, density = 1}
+  local sim, m = box(y0, shape, 1, {left = wall, right = wall, bottom = wall, top = wall})
   for i = 0, 2 do
     for j = 0, 1 do
       sim:body {shape = mvmpm.disk {center = {0.18 + 0.32 * i, y0 + 0.14 + 0.4 * j + 0.05 * i},

@@ -143,10 +143,11 @@ static int wall_skips(const sim *s, int32_t f) {
 ** sliding with friction rocks, as between bodies: contact_patch.c).
 ** Frictionless walls keep the node rule: the bounce's restitution at 16
 ** cells is 0.892 node by node, 0.824 per patch.  So do the schemes
-** sim_auto_patch() leaves out (sim.h says why). */
+** sim_auto_patch() leaves out (sim.h says why): side_patches() leaves
+** their walls to the node rule whole, and only its sides ask this. */
 static int patch_takes(const sim *s, int k, int32_t f) {
   if (s->cfg.wall_rule != WALL_AUTO) return 1;
-  return s->sides[k].mu > 0 && !s->fflat[f] && sim_auto_patch(&s->cfg);
+  return s->sides[k].mu > 0 && !s->fflat[f];
 }
 
 /* whether side k acts per patch on some field this step */

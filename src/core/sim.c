@@ -364,22 +364,17 @@ const char *sim_wall_advice(const sim *s) {
            "rolling and spin-up)";
   /* "auto" is the node rule under the schemes sim_auto_patch() leaves
   ** out (sim.h), and the patch rule for round bodies elsewhere */
-  if (s->cfg.wall_rule == WALL_AUTO && !sim_auto_patch(&s->cfg))
-    return "walls with friction under the node rule (wall_contact = "
-           "\"auto\" takes it under this transfer and shape) hardly turn "
-           "round bodies: a disc thrown along a floor slides where it would "
-           "roll, and friction takes 2.3, 1.3, 1.13 times the rigid disc's "
-           "work at 8, 16, 32 cells per diameter; pure FLIP on B-splines or "
-           "GIMP, or wall_contact = \"patch\", 1.08, 1.02, 1.001, but the "
-           "patch's impacts make energy under APIC and linear FLIP "
-           "(docs/verification.md, friction work against the rigid disc)";
-  if (s->cfg.wall_rule != WALL_NODE) return NULL; /* patch, auto, penalty */
+  if (s->cfg.wall_rule != WALL_NODE &&
+      (s->cfg.wall_rule != WALL_AUTO || sim_auto_patch(&s->cfg)))
+    return NULL; /* patch, auto per patch, penalty */
   return "walls with friction under the node rule (wall_contact = "
-         "\"node\") hardly turn round bodies: a disc thrown "
-         "along a floor slides where it would roll, and friction takes "
-         "2.3, 1.3, 1.13 times the rigid disc's work at 8, 16, 32 cells "
-         "per diameter; wall_contact = \"patch\" 1.08, 1.02, 1.001 "
-         "(docs/verification.md, friction work against the rigid disc)";
+         "\"node\", or \"auto\" under linear hats or a transfer other "
+         "than pure FLIP) hardly turn round bodies: a disc thrown along a "
+         "floor slides where it would roll, and friction takes 2.3, 1.3, "
+         "1.13 times the rigid disc's work at 8, 16, 32 cells per diameter; "
+         "wall_contact = \"patch\" 1.08, 1.02, 1.001, but its impacts make "
+         "energy under APIC and linear FLIP (docs/verification.md, friction "
+         "work against the rigid disc)";
 }
 
 /* measured (tests/verify/normals.lua): a frictionless block on a flat

@@ -34,6 +34,8 @@ local P = mvmpm.params {
   contact_gap = "default", -- or "touch", "step" (sim.contact_gap)
   speed = 0.1,         -- launch velocity (speed, speed)
   K = 1, G = 0.5,      -- the disc's bulk and shear moduli
+  volume = "default",  -- the particles' volumes (sim:body's volume): "cell",
+                       -- "exact" or "cut"
 }
 
 local h = 1 / P.cells
@@ -62,6 +64,7 @@ sim:body {
   shape = mvmpm.disk {center = {2.0, 1.0}, radius = 0.5},
   material = disc,
   velocity = {P.speed, P.speed},
+  volume = opt(P.volume),
 }
 sim:output {dir = "out/cylinder_bounce", every = 0.5, csv_every = 10}
 return sim

@@ -10,7 +10,7 @@ local mvmpm = require "mvmpm"
 local M = {g = 1, R = 0.5, T = 2, H = 0.25}
 
 -- o: cells, deg, mu, and optionally ppc (2), shape, transfer, flip,
--- update, cfl (0.25), wall_contact, body_contact, normals, normal_window, normal_patch, threads, slab (nil: the floor wall is the
+-- update, cfl (0.25), volume (the disc's, sim:body), wall_contact, body_contact, normals, normal_window, normal_patch, threads, slab (nil: the floor wall is the
 -- incline; "driven" or "elastic": a slab of thickness H is), w0 (initial
 -- spin), run (function(sim, t), default sim:run).  Returns {a, alpha, hop, e (sim:energy()), th, wmin, wmax}.
 function M.run(o)
@@ -36,7 +36,7 @@ function M.run(o)
               material = mvmpm.elastic {K = 1000, G = 500, density = 1},
               driven = o.slab == "driven" and {0, 0} or nil}
   end
-  local disc = sim:body {shape = mvmpm.disk {center = {1, H + R}, radius = R},
+  local disc = sim:body {shape = mvmpm.disk {center = {1, H + R}, radius = R}, volume = o.volume,
                          material = mvmpm.elastic {K = 100, G = 50, density = 1},
                          angular_velocity = o.w0}
   local run = o.run or function(s, t) s:run(t) end

@@ -71,6 +71,9 @@ typedef struct lsim {
   /* lattice of seeding points: which body holds each (-1 none) */
   int32_t *occ;
   size_t nocc;
+  double *claim;          /* per point: the measure earlier bodies' cut
+                          ** volumes took of its sub-cell (lua_body.c) */
+  int ncut;               /* bodies seeded with volume = "cut" */
   int fields_single;      /* every body on one field */
   /* output */
   char outdir[1024];

@@ -545,6 +545,8 @@ static int lgc(lua_State *L) {
     else if (ls->csv_open) out_csv_close(&ls->csv, err, sizeof err);
     ls->csv_open = 0;
     free(ls->occ);
+    free(ls->claim);
+    ls->claim = NULL;
     free(ls->snaps);
     hotspots_free(&ls->hs);
     ls->occ = NULL;

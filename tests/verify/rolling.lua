@@ -220,40 +220,72 @@ end
 -- size, the spin-up within 5 % at 16 cells, rolling within 2 % from 16
 -- cells on and within 1 % at 32, the budget within 1 % of the potential
 -- energy released.  CPU seconds of the two runs are printed.
-V.case "the defaults (B-splines, FLIP, wall_contact = \"auto\"): sliding and rolling"
-do
-  local se, re = {}, {}
-  for k, c in ipairs(cells) do
-    local t0 = os.clock()
-    local s = I.run {cells = c, deg = 30, mu = 0.1}
-    local r = I.run {cells = c, deg = 25, mu = 0.5}
-    local cpu = os.clock() - t0
-    local a_s = g * (math.sin(s.th) - 0.1 * math.cos(s.th))
-    local al_ref = 2 * 0.1 * g * math.cos(s.th) / R
-    local a_r = 2 / 3 * g * math.sin(r.th)
-    se[k] = math.abs(s.alpha / al_ref - 1)
-    re[k] = math.abs(r.a / a_r - 1)
-    V.near(string.format("defaults: sliding a / (g (sin - mu cos)), %d cells", c), s.a / a_s, 1, 0.01)
-    if c == 16 then
-      V.near(string.format("defaults: spin-up alpha / (2 mu g cos / R), %d cells", c), s.alpha / al_ref, 1, 0.05)
-    else
-      V.info(string.format("defaults: spin-up alpha / (2 mu g cos / R), %d cells", c), s.alpha / al_ref)
-    end
-    if c == 8 then target("defaults: rolling a, 8 cells", re[k], 0.02)
-    elseif c == 16 then target("defaults: rolling a, 16 cells", re[k], 0.01) end
-    if c >= 16 then
-      V.near(string.format("defaults: rolling a / ((2/3) g sin), %d cells", c), r.a / a_r, 1,
-             c == 16 and 0.02 or 0.01)
-    else
-      V.info(string.format("defaults: rolling a / ((2/3) g sin), %d cells", c), r.a / a_r)
-    end
-    V.info(string.format("defaults: R alpha / a (no slip), %d cells", c), r.alpha * R / r.a)
-    for _, x in ipairs {s, r} do
-      V.near(string.format("defaults: energy residual / |potential change|, %d cells", c),
-             x.e.residual / math.abs(x.e.potential), 0, 0.01)
-    end
-    V.info(string.format("defaults: CPU s of the two runs, %d cells", c), cpu)
+-- the sliding and the rolling run of one scheme at c cells (volume: the
+-- disc's, sim:body), their shared rows printed and asserted under tag
+local function pair(c, tag, volume)
+  local t0 = os.clock()
+  local s = I.run {cells = c, deg = 30, mu = 0.1, volume = volume}
+  local r = I.run {cells = c, deg = 25, mu = 0.5, volume = volume}
+  local cpu = os.clock() - t0
+  local a_s = g * (math.sin(s.th) - 0.1 * math.cos(s.th))
+  local al_ref = 2 * 0.1 * g * math.cos(s.th) / R
+  local a_r = 2 / 3 * g * math.sin(r.th)
+  local o = {spin = s.alpha / al_ref, roll = r.a / a_r, slip = r.alpha * R / r.a}
+  o.se, o.re = math.abs(o.spin - 1), math.abs(o.roll - 1)
+  V.near(string.format("%s: sliding a / (g (sin - mu cos)), %d cells", tag, c), s.a / a_s, 1, 0.01)
+  V.info(string.format("%s: R alpha / a (no slip), %d cells", tag, c), o.slip)
+  for _, x in ipairs {s, r} do
+    V.near(string.format("%s: energy residual / |potential change|, %d cells", tag, c),
+           x.e.residual / math.abs(x.e.potential), 0, 0.01)
   end
-  V.info("defaults: sliding spin-up error, observed order (8 -> 32)", order(se))
-  V.info("defaults: rolling acceleration error, observed order (8 -> 32)", order(re))
+  V.info(string.format("%s: CPU s of the two runs, %d cells", tag, c), cpu)
+  return o
+end
+
+local def_se, def_re = {}, {} -- the defaults' errors, for the cut volumes below
+V.case "the defaults (B-splines, FLIP, wall_contact = \"auto\"): sliding and rolling"
+for k, c in ipairs(cells) do
+  local o = pair(c, "defaults")
+  def_se[k], def_re[k] = o.se, o.re
+  if c == 16 then
+    V.near(string.format("defaults: spin-up alpha / (2 mu g cos / R), %d cells", c), o.spin, 1, 0.05)
+  else
+    V.info(string.format("defaults: spin-up alpha / (2 mu g cos / R), %d cells", c), o.spin)
+  end
+  if c == 8 then target("defaults: rolling a, 8 cells", o.re, 0.02)
+  elseif c == 16 then target("defaults: rolling a, 16 cells", o.re, 0.01) end
+  if c >= 16 then
+    V.near(string.format("defaults: rolling a / ((2/3) g sin), %d cells", c), o.roll, 1,
+           c == 16 and 0.02 or 0.01)
+  else
+    V.info(string.format("defaults: rolling a / ((2/3) g sin), %d cells", c), o.roll)
+  end
+end
+V.info("defaults: sliding spin-up error, observed order (8 -> 32)", order(def_se))
+V.info("defaults: rolling acceleration error, observed order (8 -> 32)", order(def_re))
+
+-- The defaults with the disc seeded by volume = "cut" (sim:body): the
+-- particles take the disc's area inside their sub-cells, so the disc has
+-- the continuum's mass and inertia (the lattice count gives I = 0.519 /
+-- 0.505 / 0.502 m R^2 at 8 / 16 / 32 cells, for which a rigid disc rolls
+-- at 0.988 / 0.996 / 0.999 of (2/3) g sin).  Asserted: the spin-up and
+-- the rolling acceleration nearer the rigid disc's than the lattice
+-- count's at 8 cells, the spin-up at 16 too, and the rows the defaults
+-- assert at 16 cells; at 32 cells the rolling disc slips (R alpha / a
+-- 0.96) and runs 1.3 % fast: printed.
+V.case "the defaults with volume = \"cut\": sliding and rolling"
+for k, c in ipairs(cells) do
+  local o = pair(c, "cut", "cut")
+  V.info(string.format("cut: spin-up alpha / (2 mu g cos / R), %d cells", c), o.spin)
+  V.info(string.format("cut: rolling a / ((2/3) g sin), %d cells", c), o.roll)
+  if c == 8 then
+    target("cut: rolling a, 8 cells", o.re, 0.02)
+    V.below("cut: spin-up error below the lattice count's, 8 cells", o.se, def_se[k])
+    V.below("cut: rolling error below the lattice count's, 8 cells", o.re, def_re[k])
+  elseif c == 16 then
+    target("cut: rolling a, 16 cells", o.re, 0.01)
+    V.below("cut: spin-up error below the lattice count's, 16 cells", o.se, def_se[k])
+    V.near("cut: spin-up alpha / (2 mu g cos / R), 16 cells", o.spin, 1, 0.05)
+    V.near("cut: rolling a / ((2/3) g sin), 16 cells", o.roll, 1, 0.02)
+  end
 end

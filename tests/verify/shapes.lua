@@ -18,6 +18,13 @@
 --   4. A ball across a periodic seam seeds its image (the whole ball's
 --      measure); a body from points (x, y[, z]) has the points' mass.
 --   5. Bad shapes are refused with the field and the expected count.
+--   6. volume = "cut": each particle takes the shape's
+--      measure inside its sub-cell, and the slivers in sub-cells whose
+--      centres are outside go to the nearest particles: the body's mass
+--      is the shape's (every size, each shape, below the lattice count's
+--      error), a disc's or ball's inertia is the continuum's, a symmetric
+--      shape's volumes are symmetric to the bit, and bodies with the rest
+--      around them fill the domain's measure.
 local mvmpm = require "mvmpm"
 local V = require "mvmpm.verify"
 local pi = math.pi
@@ -40,11 +47,13 @@ local function domain()
   return {x = {0, 1}, y = {0, 1}, z = {0, 1}}
 end
 
--- the seeded measure of shape at cell 1 / n (density 1, volume = "cell")
-local function seeded(n, shape)
+-- the seeded measure of shape at cell 1 / n (density 1; volume "cell":
+-- the lattice count, unless given)
+local function seeded(n, shape, volume)
   local s = mvmpm.sim {domain = domain(), cell = 1 / n, ppc = 2, dim = D}
-  local b = s:body {shape = shape(), material = mvmpm.elastic {K = 1, G = 1, density = 1}}
-  return b:mass()
+  local b = s:body {shape = shape(), material = mvmpm.elastic {K = 1, G = 1, density = 1},
+                    volume = volume or "cell"}
+  return b:mass(), b
 end
 
 local shapes = {}
@@ -92,6 +101,88 @@ for _, sh in ipairs(shapes) do
   V.below(name .. ": relative error at the finest cell", errs[3], 0.02)
   V.below(name .. ": error shrinks (finest / coarsest)", errs[3] / errs[1], 0.6)
   V.near(name .. ": s:area() is the exact measure", make():area(), exact, 1e-12, true)
+end
+
+V.case(string.format('%d-D: volume = "cut" seeds the exact measure', D))
+for _, sh in ipairs(shapes) do
+  local name, make, exact = sh[1], sh[2], sh[3]
+  local errs = {}
+  for i, n in ipairs(ns) do
+    local cut = seeded(n, make, "cut")
+    local cell = seeded(n, make)
+    errs[i] = math.abs(cut - exact) / exact
+    V.info(string.format("%s, cut: relative error at cell 1/%d", name, n), errs[i])
+    V.below(string.format("%s, cut: error below the lattice count's at cell 1/%d", name, n),
+            errs[i], math.abs(cell - exact) / exact)
+  end
+  V.below(name .. ", cut: relative error at the finest cell", errs[3], 2e-3)
+end
+do -- the default is the lattice count ("cell")
+  local s = mvmpm.sim {domain = domain(), cell = 1 / ns[1], ppc = 2, dim = D}
+  local b = s:body {shape = shapes[1][2](), material = mvmpm.elastic {K = 1, G = 1, density = 1}}
+  V.near("the default volume is the lattice count: " .. shapes[1][1], b:mass(),
+         seeded(ns[1], shapes[1][2]), 0, true)
+end
+-- a disc's polar inertia (m R^2 / 2) or a ball's about z (2 m R^2 / 5),
+-- from the particles (b:diag(): sum m r^2 and each particle's own
+-- m a^2 / 6 about its centre)
+for i, n in ipairs(ns) do
+  local k = {}
+  for _, vol in ipairs {"cell", "cut"} do
+    local m, b = seeded(n, shapes[1][2], vol)
+    local d = b:diag()
+    k[vol] = (D == 2 and d.inertia or d.inertia[3][3]) / (m * 0.09)
+  end
+  local ref = D == 2 and 0.5 or 0.4
+  V.info(string.format("%s: I / (m R^2) at cell 1/%d, lattice count", shapes[1][1], n), k.cell)
+  V.info(string.format("%s, cut: I / (m R^2) at cell 1/%d", shapes[1][1], n), k.cut)
+  if 0.6 * n >= 8 then -- from 8 cells across the diameter
+    V.near(string.format("%s, cut: I / (m R^2) at cell 1/%d (continuum %g)", shapes[1][1], n, ref),
+           k.cut, ref, 0.005, true)
+  end
+  if i == 1 then
+    V.below(string.format("%s: cut nearer the continuum inertia than the count, cell 1/%d",
+                          shapes[1][1], n), math.abs(k.cut - ref), math.abs(k.cell - ref))
+  end
+end
+do -- mirror images: a disc (ball) centred on a lattice line through a site
+  -- boundary has its particles' volumes the same to the bit at x and 1 - x
+  local s = mvmpm.sim {domain = domain(), cell = 1 / 10, ppc = 2, dim = D}
+  s:body {shape = D == 2 and mvmpm.disk {center = P(0.5, 0.5), radius = 0.33}
+                  or mvmpm.ball {center = P(0.5, 0.5, 0.5), radius = 0.33},
+          material = mvmpm.elastic {K = 1, G = 1, density = 1}, volume = "cut"}
+  local x, v = s:particles("position"), s:particles("volume0")
+  local key = {}
+  local function k3(a, b, c) return string.format("%.6f %.6f %.6f", a, b, c or 0) end
+  for i = 1, #v do key[k3(x.x[i], x.y[i], x.z and x.z[i])] = v[i] end
+  local worst, found = 0, 0
+  for i = 1, #v do
+    local w = key[k3(1 - x.x[i], x.y[i], x.z and x.z[i])]
+    if w then
+      found = found + 1
+      worst = math.max(worst, math.abs(w - v[i]))
+    end
+  end
+  V.near("cut: every particle has a mirror image in x", found, #v, 0)
+  V.near("cut: the mirror images' volumes are the same to the bit", worst, 0, 0)
+end
+do -- two bodies with the rest around them fill the domain's measure
+  local s = mvmpm.sim {domain = domain(), cell = 1 / ns[1], ppc = 2, dim = D}
+  local mat = mvmpm.elastic {K = 1, G = 1, density = 1}
+  local r1, r2 = 0.23, 0.17
+  local a = s:body {shape = D == 2 and mvmpm.disk {center = P(0.31, 0.33), radius = r1}
+                    or mvmpm.ball {center = P(0.31, 0.33, 0.3), radius = r1}, material = mat,
+                    volume = "cut"}
+  local b = s:body {shape = D == 2 and mvmpm.disk {center = P(0.7, 0.69), radius = r2}
+                    or mvmpm.ball {center = P(0.7, 0.69, 0.66), radius = r2}, material = mat,
+                    volume = "cut"}
+  local r = s:body {shape = mvmpm.rest(), material = mat}
+  local va = D == 2 and pi * r1 * r1 or 4 / 3 * pi * r1 ^ 3
+  local vb = D == 2 and pi * r2 * r2 or 4 / 3 * pi * r2 ^ 3
+  V.near("cut: first body's measure", a:mass(), va, 5e-3, true)
+  V.near("cut: second body's measure", b:mass(), vb, 5e-3, true)
+  V.near("cut: the bodies and the rest fill the domain", a:mass() + b:mass() + r:mass(), 1, 1e-12,
+         true)
 end
 
 V.case("the other names seed the same points")
@@ -311,6 +402,26 @@ do
           string.format("field 'material' is a %d-D material, made before this %d-D simulation", O, D))
   refuses("a shape of the other dimension", function() s:body {shape = oshape, material = mat} end,
           string.format("field 'shape' is a %d-D shape, made before this %d-D simulation", O, D))
+end
+do
+  local s = mvmpm.sim {domain = domain(), cell = 0.1, ppc = 2, dim = D}
+  local mat = mvmpm.elastic {K = 1, G = 1, density = 1}
+  local shp = D == 2 and mvmpm.disk {center = {0.5, 0.5}, radius = 0.2}
+              or mvmpm.ball {center = {0.5, 0.5, 0.5}, radius = 0.2}
+  refuses('volume = "cut" on the rest', function()
+    s:body {shape = mvmpm.rest(), material = mat, volume = "cut"} end,
+    "body 'body1': volume = \"cut\" cuts a shape seeded on the grid's lattice: not the rest")
+  if D == 2 then
+    refuses('volume = "cut" on a lattice of its own', function()
+      s:body {shape = shp, material = mat, volume = "cut", lattice = {angle = 10}} end,
+      "volume = \"cut\" cuts a shape seeded on the grid's lattice: not a body with a lattice of its own")
+  end
+  refuses('volume = "cut" for points', function()
+    s:body {points = D == 2 and {x = {0.5}, y = {0.5}} or {x = {0.5}, y = {0.5}, z = {0.5}},
+            material = mat, volume = "cut"} end,
+    "volume = \"cut\" cuts a shape; 'points' carry their own volumes")
+  refuses("volume = \"box\"", function()
+    s:body {shape = shp, material = mat, volume = "box"} end, "field 'volume'")
 end
 if D == 2 then
   refuses("extrude in 2-D", function()

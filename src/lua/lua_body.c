@@ -379,58 +379,58 @@ static void seed_cut(lua_State *L, lsim *ls, int shidx, seed *sd, size_t n0) {
   for (k = 0; k < nsite; k++) {
     double lo[DIM], x[DIM];
     int32_t own = map[k];
-    int nin = 0, ncorner = 1 << DIM, s0[DIM], e;
+    int whole = 0, s0[DIM], e;
+    long long given = 0; /* what the body takes of this sub-cell */
     for (d = 0; d < DIM; d++) lo[d] = g->lo[d] + (i0[d] + ix[d]) * hp;
-    for (c = 0; c < ncorner; c++) {
-      for (d = 0; d < DIM; d++) x[d] = lo[d] + ((c >> d) & 1) * hp;
-      nin += lshape_inside(L, shidx, sh, x);
-    }
     /* the centre as seed_shape tested it, to the bit: on a shape's edge
     ** (a triangle's side through lattice points) the test could go
     ** either way */
     for (d = 0; d < DIM; d++) x[d] = g->lo[d] + (i0[d] + ix[d] + 0.5) * hp;
     c = lshape_inside(L, shidx, sh, x);
-    nin += c;
     /* a site whose centre is inside but holds no particle of this body
     ** is another body's (or an overlap skipped): none of it is ours; one
     ** whose centre is outside is searched for slivers where a particle
     ** of the body is beside it, whether or not a corner is inside (the
     ** tip of an acute corner may cross a sub-cell between its corners:
     ** a triangle cut at 20 cells lost 0.6 % of its area so) */
-    if (own < 0 && !c) nin = beside(map, w, ix);
-    if (!(c && own < 0) && nin > 0) {
-      /* what the body takes of this sub-cell: its particle's share, or
-      ** a sliver its neighbours take */
-      long long given = 0;
-      if (own >= 0 && nin == ncorner + 1) {
-        got[own] += CUT_SITE;
-        given = CUT_SITE;
-      } else {
-        for (d = 0; d < DIM; d++) s0[d] = 0;
-        for (;;) { /* the sub-lattice of the site */
-          int32_t to = own;
-          for (d = 0; d < DIM; d++) x[d] = lo[d] + (s0[d] + 0.5) * sub * hp;
-          if (lshape_inside(L, shidx, sh, x)) {
-            if (to >= 0) {
-              got[to] += CUT_U;
-              given += CUT_U;
-            } else /* a sliver: the nearest particles beside it */
-              given += sliver(map, w, ix, s0, got);
-          }
-          for (e = 0; e < DIM && ++s0[e] == CUT_N; e++) s0[e] = 0;
-          if (e == DIM) break;
-        }
+    if (own < 0 ? c || !beside(map, w, ix) : 0) {
+      for (d = 0; d < DIM && ++ix[d] == w[d]; d++) ix[d] = 0;
+      continue;
+    }
+    if (own >= 0 && c) { /* its corners all inside: taken whole */
+      whole = 1;
+      for (e = 0; e < (1 << DIM) && whole; e++) {
+        for (d = 0; d < DIM; d++) x[d] = lo[d] + ((e >> d) & 1) * hp;
+        whole = lshape_inside(L, shidx, sh, x);
       }
-      if (given > 0) { /* the rest, seeded later, takes what is left */
-        size_t kg = 0, stride = 1;
-        for (d = 0; d < DIM; d++) {
-          int i = i0[d] + ix[d];
-          if (g->periodic[d]) i = ((i % N[d]) + N[d]) % N[d];
-          kg += (size_t)i * stride;
-          stride *= (size_t)N[d];
+    }
+    if (whole) {
+      got[own] += CUT_SITE;
+      given = CUT_SITE;
+    } else {
+      for (d = 0; d < DIM; d++) s0[d] = 0;
+      for (;;) { /* the sub-lattice of the site */
+        for (d = 0; d < DIM; d++) x[d] = lo[d] + (s0[d] + 0.5) * sub * hp;
+        if (lshape_inside(L, shidx, sh, x)) {
+          if (own >= 0) {
+            got[own] += CUT_U;
+            given += CUT_U;
+          } else /* a sliver: the nearest particles beside it */
+            given += sliver(map, w, ix, s0, got);
         }
-        seed_claim(L, sd, kg, (double)given);
+        for (e = 0; e < DIM && ++s0[e] == CUT_N; e++) s0[e] = 0;
+        if (e == DIM) break;
       }
+    }
+    if (given > 0) { /* the rest, seeded later, takes what is left */
+      size_t kg = 0, stride = 1;
+      for (d = 0; d < DIM; d++) {
+        int i = i0[d] + ix[d];
+        if (g->periodic[d]) i = ((i % N[d]) + N[d]) % N[d];
+        kg += (size_t)i * stride;
+        stride *= (size_t)N[d];
+      }
+      seed_claim(L, sd, kg, (double)given);
     }
     for (d = 0; d < DIM && ++ix[d] == w[d]; d++) ix[d] = 0;
   }

@@ -286,6 +286,28 @@ static void seed_shape(lua_State *L, lsim *ls, int shidx, int skip_taken,
 #define CUT_U 840
 #define CUT_SITE ((long long)CUT_U * (DIM == 2 ? CUT_N * CUT_N : CUT_N * CUT_N * CUT_N))
 
+/* the body's particle at site ix + o of the shape's range (sizes w,
+** map from seed_cut), or -1: none there, or the site outside the range */
+static int32_t range_at(const int32_t *map, const int w[DIM], const int ix[DIM],
+                        const int o[DIM]) {
+  size_t at = 0, stride = 1;
+  int d;
+  for (d = 0; d < DIM; d++) {
+    int i = ix[d] + o[d];
+    if (i < 0 || i >= w[d]) return -1;
+    at += (size_t)i * stride;
+    stride *= (size_t)w[d];
+  }
+  return map[at];
+}
+
+/* the next of the 3^DIM offsets o in {-1, 0, 1}^DIM; 0 after the last */
+static int offset_next(int o[DIM]) {
+  int d;
+  for (d = 0; d < DIM && ++o[d] == 2; d++) o[d] = -1;
+  return d < DIM;
+}
+
 /* A sample of a sub-cell without a particle of the body (site ix of the
 ** shape's range, of sizes w; sample s0 of CUT_N per axis) goes to the
 ** body's nearest particles beside it, shared equally between those at
@@ -299,27 +321,20 @@ static long long sliver(const int32_t *map, const int w[DIM], const int ix[DIM],
   int o[DIM], d, nb = 0;
   int32_t near[1 << (2 * DIM)];
   for (d = 0; d < DIM; d++) o[d] = -1;
-  for (;;) {
-    size_t at = 0, stride = 1;
-    int ok = 1;
+  do {
+    int32_t p = range_at(map, w, ix, o);
     long r2 = 0;
     for (d = 0; d < DIM; d++) {
-      int i = ix[d] + o[d];
       /* twice the offset from the neighbour's centre, in samples */
       long e = 2 * (long)s0[d] + 1 - (long)CUT_N * (2 * o[d] + 1);
-      if (i < 0 || i >= w[d]) ok = 0;
-      at += (size_t)i * stride;
-      stride *= (size_t)w[d];
       r2 += e * e;
     }
-    if (ok && map[at] >= 0 && (best < 0 || r2 <= best)) {
+    if (p >= 0 && (best < 0 || r2 <= best)) {
       if (r2 < best || best < 0) nb = 0;
       best = r2;
-      near[nb++] = map[at];
+      near[nb++] = p;
     }
-    for (d = 0; d < DIM && ++o[d] == 2; d++) o[d] = -1;
-    if (d == DIM) break;
-  }
+  } while (offset_next(o));
   for (d = 0; d < nb; d++) got[near[d]] += CUT_U / nb;
   return nb ? CUT_U : 0;
 }
@@ -329,19 +344,10 @@ static long long sliver(const int32_t *map, const int w[DIM], const int ix[DIM],
 static int beside(const int32_t *map, const int w[DIM], const int ix[DIM]) {
   int o[DIM], d;
   for (d = 0; d < DIM; d++) o[d] = -1;
-  for (;;) {
-    size_t at = 0, stride = 1;
-    int ok = 1;
-    for (d = 0; d < DIM; d++) {
-      int i = ix[d] + o[d];
-      if (i < 0 || i >= w[d]) ok = 0;
-      at += (size_t)i * stride;
-      stride *= (size_t)w[d];
-    }
-    if (ok && map[at] >= 0) return 1;
-    for (d = 0; d < DIM && ++o[d] == 2; d++) o[d] = -1;
-    if (d == DIM) return 0;
-  }
+  do
+    if (range_at(map, w, ix, o) >= 0) return 1;
+  while (offset_next(o));
+  return 0;
 }
 
 static void seed_cut(lua_State *L, lsim *ls, int shidx, seed *sd, size_t n0) {
@@ -463,7 +469,7 @@ static void rest_cut(lua_State *L, lsim *ls, seed *sd, const size_t *taken) {
   }
   for (k = 0; k < ls->nocc; k++) {
     long long left = CUT_SITE - (long long)ls->claim[k];
-    double best = HUGE_VAL;
+    int best = DIM + 1; /* squared offsets are at most DIM */
     int ix[DIM], o[DIM];
     size_t r = k;
     int32_t near[1 << (2 * DIM)];
@@ -491,8 +497,7 @@ static void rest_cut(lua_State *L, lsim *ls, seed *sd, const size_t *taken) {
         best = n2;
         near[nb++] = map[at];
       }
-      for (d = 0; d < DIM && ++o[d] == 2; d++) o[d] = -1;
-      if (d == DIM) break;
+      if (!offset_next(o)) break;
     }
     /* split in whole units: what does not divide stays with the first */
     for (d = 0; d < nb; d++) u[near[d]] += left / nb + (d == 0 ? left % nb : 0);

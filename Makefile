@@ -295,6 +295,7 @@ figures: $(BIN)
 	./$(BIN) test docs/figures/default_shape.lua
 	./$(BIN) test docs/figures/penalty_bounce.lua
 	./$(BIN) test docs/figures/wall_rules.lua
+	./$(BIN) test docs/figures/driven_walls.lua
 
 # the accuracy-cost study (docs/accuracy.md): each case over its grid of
 # settings, one after the other (timings are taken one run at a time);

@@ -6,6 +6,12 @@
 --
 --   mvmpm run scenarios/cylinder_bounce.lua --set friction=0.1
 --
+-- With walls=driven the box's sides are driven (still, rigid) bodies
+-- half a unit thick outside the box, the grid grown to hold them, and
+-- the disc meets them through contact between bodies (friction then
+-- the contact law's); offset moves their faces out by that fraction of
+-- a cell (0: on node lines, as the grid's walls are).
+--
 -- The scheme (shape, update, transfer, flip) is the engine's default
 -- unless set: "default" passes nothing to mvmpm.sim.
 local mvmpm = require "mvmpm"
@@ -36,12 +42,19 @@ local P = mvmpm.params {
   K = 1, G = 0.5,      -- the disc's bulk and shear moduli
   volume = "default",  -- the particles' volumes (sim:body's volume): "cell",
                        -- "exact" or "cut"
+  walls = "grid",      -- or "driven": driven bodies for the box's sides
+  offset = 0,          -- walls = "driven": their faces moved out (cells)
 }
+if P.walls ~= "grid" and P.walls ~= "driven" then
+  error(string.format("cylinder_bounce: walls must be \"grid\" or \"driven\" (got %q)", P.walls), 0)
+end
 
 local h = 1 / P.cells
 local function opt(v) if v ~= "default" and v ~= -1 then return v end end
+local driven = P.walls == "driven"
+local T = driven and 0.5 or 0 -- the driven walls' thickness
 local sim = mvmpm.sim {
-  domain = {x = {0, 3}, y = {0, 3}},
+  domain = {x = {-T, 3 + T}, y = {-T, 3 + T}},
   cell = h,
   ppc = P.ppc,
   shape = opt(P.shape),
@@ -51,8 +64,8 @@ local sim = mvmpm.sim {
   xpic = P.xpic,
   cfl = P.cfl,
   t_end = P.t_end,
-  sides = {"wall", friction = P.friction},
-  contact = {separation = P.separation},
+  sides = {"wall", friction = driven and 0 or P.friction},
+  contact = {separation = P.separation, friction = driven and P.friction or nil},
   wall_contact = opt(P.wall_contact),
   wall_stiffness = opt(P.wall_stiffness),
   contact_gap = opt(P.contact_gap),
@@ -66,5 +79,17 @@ sim:body {
   velocity = {P.speed, P.speed},
   volume = opt(P.volume),
 }
+-- after the disc, which stays sim:bodies()[1]
+if driven then
+  local d = P.offset * h
+  local m = mvmpm.elastic {K = P.K, G = P.G, density = 1, name = "wall"}
+  for _, w in ipairs {
+    {"bottom", {-T, -T}, {3 + T, -d}}, {"top", {-T, 3 + d}, {3 + T, 3 + T}},
+    {"left", {-T, -d}, {-d, 3 + d}}, {"right", {3 + d, -d}, {3 + T, 3 + d}},
+  } do
+    sim:body {name = w[1], shape = mvmpm.rect {lo = w[2], hi = w[3]}, material = m, driven = {0, 0}}
+  end
+end
+
 sim:output {dir = "out/cylinder_bounce", every = 0.5, csv_every = 10}
 return sim

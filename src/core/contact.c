@@ -16,7 +16,8 @@
 ** faces take "maxvolume" over NORMAL_FLAT_WINDOW cells and one normal
 ** per patch (within 1.6 % at 0, 30 and 45 degrees); everywhere, that
 ** rule made a settled pile of discs creep and two spheres lose their
-** head-on symmetry (docs/verification.md, contact: normals).
+** head-on symmetry (docs/verification.md, contact: normals).  Where a
+** round body meets a flat one, the flat face's normal (face() below).
 **
 ** The rule (after the grid momentum update, on q = p + dt f):
 **   v_cm = sum q_r / sum m_r (a driven body's velocity replaces it)
@@ -238,10 +239,68 @@ static int flat_node(const sim *s, int32_t n) {
   return 1;
 }
 
+/*
+** "auto" where a round body meets a flat one (a node of two fields, one
+** flat): the flat face's own normal, its mass gradient summed over the
+** nodes within NORMAL_FLAT_WINDOW cells that the same two fields share,
+** the round body's the negative.  Why not the difference of the two: a
+** node off the contact point has the round body's radial gradient, the
+** normal leans with it, and along a leaning normal a flat face's reach
+** (reach.c) is not the gap: a disc falling onto a driven slab at 16
+** cells was taken for touching 0.56 cell before it did, and the
+** material a cell inside it was stopped along the leaning normals (the
+** report's bounce with driven bodies for walls lost 9 to 19 % per
+** impact; a disc sliding frictionless on a slab kept 0.63 / 0.69 of its
+** speed at 8 / 16 cells node by node).  Why the window: a node's own
+** gradient is the face's only on the face; at a plate's corner it turns
+** 45 degrees, and deep in a thin plate it vanishes (the midline of a
+** slab two cells thick: the difference then took over and slowed the
+** sliding disc 6 % at 8 cells); summed over one cell each way a disc
+** pressed on a plate 6.4 cells tall read a normal force 4 % above the
+** plate's (the corners' nodes pushing along their diagonals), over four
+** cells 0.6 %.  Why only the nodes the two share: the flat body's end
+** where it abuts another body (two driven walls meeting in a corner)
+** is in its gradient too, and summed in it turned the face's normal 58
+** degrees for a disc meeting the wall four cells from the corner.
+** Returns 0 where the face has no gradient even so (the difference
+** stands).
+*/
+static int face(sim *s, int32_t n, int32_t first) {
+  grid *g = &s->g;
+  int32_t second = g->snext[first];
+  int32_t fl = s->fflat[g->sfield[first]] ? first : second;
+  int32_t ro = fl == first ? second : first;
+  const int32_t ff = g->sfield[fl], fr = g->sfield[ro];
+  double sum[DIM] = {0}, len = 0;
+  int i[DIM], b[DIM], d;
+  grid_ijk(g, n, i);
+  win_first(b, NORMAL_FLAT_WINDOW);
+  do {
+    int32_t j = win_node(g, i, b), q, qf = -1;
+    int both = 0;
+    if (j < 0 || g->head[j] < 0) continue;
+    for (q = g->head[j]; q >= 0; q = g->snext[q]) {
+      if (g->sfield[q] == ff) qf = q;
+      else if (g->sfield[q] == fr) both = 1;
+    }
+    if (qf < 0 || !both) continue;
+    for (d = 0; d < DIM; d++) sum[d] += g->sg[d][qf];
+  } while (win_next(b, NORMAL_FLAT_WINDOW));
+  for (d = 0; d < DIM; d++) len += sum[d] * sum[d];
+  if (!(len > 0)) return 0;
+  len = sqrt(len);
+  for (d = 0; d < DIM; d++) {
+    g->sn[d][fl] = sum[d] / len;
+    g->sn[d][ro] = -sum[d] / len;
+  }
+  return 1;
+}
+
 static void normals(sim *s, size_t k0, size_t k1) {
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   const int autom = cfg->normals == NORMALS_AUTO, flats = autom && s->flatpair;
+  const int faces = autom && s->flatmix;
   double *const *ag = cfg->normals == NORMALS_MASS || autom ? g->sg : g->sv;
   const int maxvg = cfg->normals == NORMALS_MAXVOLUME;
   const int pl0 = cfg->normals == NORMALS_PLANE;
@@ -263,6 +322,9 @@ static void normals(sim *s, size_t k0, size_t k1) {
     ** again (where the first fell back on the gradients it is solved) */
     const int two = first >= 0 && g->snext[first] >= 0 && g->snext[g->snext[first]] < 0;
     int fitted = 0;
+    if (faces && two && s->fflat[g->sfield[first]] != s->fflat[g->sfield[g->snext[first]]] &&
+        face(s, n, first))
+      continue;
     for (sl = first; sl >= 0; sl = g->snext[sl]) {
       double v[DIM], own[DIM], rest[DIM], len = 0, lo = 0, lr = 0;
       int d;
@@ -853,6 +915,18 @@ static void node(sim *s, size_t k0, double *const mom[DIM],
       }
     }
     if (!(dn > 0)) continue;
+    /* a drive stops a round body only where the drive's material is, as
+    ** a wall acts on its line and beyond: past DRIVE_REACH cells it holds
+    ** a sliver of its particles' stencils, and its velocity imposed there
+    ** stopped the round body's interior a cell inside (a disc on driven
+    ** bodies for walls lost 6 % more per impact at 8 cells than on the
+    ** grid's walls; with the rule the first impact loses the same where
+    ** the driven faces lie on node lines).  A flat body keeps every node:
+    ** with the rule a block sliding on a driven slab, aligned or tilted,
+    ** tipped and slowed (15 % along the grid at 8 cells, normals "mass"
+    ** with one normal per patch), its face's corners a cell above the
+    ** slab no longer held */
+    if (o == drv && sim_drive_far(s, g->sfield[sl], drv)) continue;
     fn = 1;
     if (cfg->release == RELEASE_OPEN && opening(s, sl, o, &gap)) {
       fn = closing(s, sl, o, o == drv, vref, smom, dn, gap);

@@ -34,9 +34,9 @@
 ** Momentum is conserved over the patch, not node by node.  Where the
 ** two sides overlap deeply a node's own approach is stopped too
 ** (pass() below).  Measured (tests/verify/body_patch.lua): the thrown
-** disc books 1.069 / 1.010 / 0.997 of the rigid disc's friction work,
-** and rolls down a slab at 0.93 / 0.98 / 0.985 of the rigid rate (node
-** by node 0.49 / 0.89 / 0.93).  Not the default: head-on impacts lose
+** disc books 1.080 / 1.018 / 1.002 of the rigid disc's friction work,
+** and rolls down a slab at 0.93 / 0.98 / 0.986 of the rigid rate (node
+** by node 0.55 / 0.92).  Not the default: head-on impacts lose
 ** more (6-9 % with mass normals) and a block sliding with friction on a
 ** flat face rocks (one velocity change cannot move the pressure to its
 ** leading edge).
@@ -281,35 +281,44 @@ static size_t flood(sim *s, int32_t n, int32_t id, int32_t *list) {
   return len;
 }
 
-/* every shared node labelled: -2 where pair() takes it, -1 elsewhere */
-static void label(sim *s) {
+/* every shared node labelled: -2 where pair() takes it, -1 elsewhere;
+** far: not where a drive's material stays beyond DRIVE_REACH (contact.c
+** node() says why; the reach is known once the normals are taken) */
+static void label(sim *s, int far) {
   grid *g = &s->g;
   size_t k;
   for (k = 0; k < g->nshared; k++) {
     int32_t n = g->shared[k], a, b;
-    s->work.cplab[n] = pair(s, n, &a, &b) ? -2 : -1;
+    int on = pair(s, n, &a, &b);
+    if (on && far && s->fdriven[g->sfield[b]] >= 0 && sim_drive_far(s, g->sfield[a], b)) on = 0;
+    s->work.cplab[n] = on ? -2 : -1;
   }
 }
 
 /* Marks the nodes it takes in s->work.cplab (>= 0: taken, contact.c's
 ** node() leaves them), -1 elsewhere among the shared nodes.  Under
 ** body_contact = "auto" only the patches where a flat field meets one
-** that is not (sim.fflat: a round body on a flat one) are taken: two
-** round bodies lose more energy per patch head on, and a block sliding
-** with friction on a flat body rocks (one velocity change cannot move
-** its pressure to the leading edge). */
+** that is not (sim.fflat: a round body on a flat one) with friction
+** between them are taken: two round bodies lose more energy per patch
+** head on, a block sliding with friction on a flat body rocks (one
+** velocity change cannot move its pressure to the leading edge), and
+** without friction the patch buys no torque and its impacts lose more
+** than the node rule's (the report's bounce with driven bodies for
+** walls: -9.7 / -5.8 / -1.7 % after three impacts at 8 / 16 / 32 cells
+** against -7.5 / -3.8 / -1.4 %), as at the walls (boundary.c). */
 void contact_patches(sim *s, int dry) {
   grid *g = &s->g;
   int32_t *lab = s->work.cplab, *list = s->work.cplist;
   const int mixed = s->cfg.body_rule != BODY_PATCH;
   size_t k, np = 0, i, len;
-  label(s);
+  label(s, 1);
   for (k = 0; k < g->nshared; k++) {
     int32_t n = g->shared[k], a, b;
     if (lab[n] != -2) continue;
     len = flood(s, n, (int32_t)np, list);
     pair(s, n, &a, &b);
-    if ((mixed && s->fflat[g->sfield[a]] == s->fflat[g->sfield[b]]) ||
+    if ((mixed && (s->fflat[g->sfield[a]] == s->fflat[g->sfield[b]] ||
+                   !(sim_law(s, g->sfield[a], g->sfield[b]) > 0))) ||
         patch(s, list, len, dry)) /* the node rule's */
       for (i = 0; i < len; i++) lab[list[i]] = -1;
     np++;
@@ -339,7 +348,7 @@ void contact_patch_normals(sim *s) {
   grid *g = &s->g;
   int32_t *lab = s->work.cplab, *list = s->work.cplist;
   size_t k, i, len;
-  label(s);
+  label(s, 0);
   for (k = 0; k < g->nshared; k++) {
     int32_t n = g->shared[k], a, b;
     double N[DIM] = {0}, W = 0, nn = 0;

@@ -84,6 +84,7 @@ static void node_recs(const sim *s, size_t k, rec *rc, size_t *nr) {
     }
     if (drv >= 0) o = drv;
     if (o < 0 || !(dn > 0)) continue;
+    if (o == drv && sim_drive_far(s, g->sfield[sl], drv)) continue; /* as contact.c */
     if (s->cfg.gap_check && g->sext[sl] + other < 0) continue;
     e = &rc[(*nr)++];
     e->r = g->sfield[sl];

@@ -57,7 +57,9 @@ extern const char *const transfer_names[];
 ** for both sides, or the least-squares plane between the particles;
 ** NORMALS_AUTO (the default): the mass gradient, but where only fields
 ** of flat-faced bodies meet (sim.fflat) the larger volume gradient over
-** NORMAL_FLAT_WINDOW cells with one normal per contact patch */
+** NORMAL_FLAT_WINDOW cells with one normal per contact patch, and where
+** a round body meets a flat one the flat face's own mass gradient over
+** as many */
 enum normals_kind { NORMALS_MASS, NORMALS_VOLUME, NORMALS_MAXVOLUME,
                     NORMALS_PLANE, NORMALS_AUTO };
 /* contact where a bond was cut (contact.c): only once the opening measured
@@ -68,6 +70,10 @@ enum release_kind { RELEASE_OPEN, RELEASE_CONTACT };
 #define NORMAL_WINDOW_MAX 8
 /* NORMALS_AUTO's window between flat faces (contact.c says why 4) */
 #define NORMAL_FLAT_WINDOW 4
+/* A driven body acts on a round one at a shared node only where its
+** material reaches within this many cells of the node (reach.c), as a
+** wall acts on its line and beyond (contact.c, driven partners) */
+#define DRIVE_REACH 0.75
 #define NSIDES (2 * DIM)
 /* doubles per wall column wall_spring.c works in: the columns' sums,
 ** the springs moved, the patches' slides and the springs (struct spr) */
@@ -439,6 +445,13 @@ static inline int sim_vol_grad(const sim *s) {
 static inline int sim_body_patches(const sim *s) {
   return s->cfg.body_rule == BODY_PATCH ||
          (s->cfg.body_rule == BODY_AUTO && s->flatmix);
+}
+/* whether driven slot sl's material stays beyond DRIVE_REACH cells of
+** its node (the reach, reach.c, so only with the separation check) where
+** it meets field f of a round body: the drive then stops no partner
+** there.  Flat bodies keep every node (contact.c says why) */
+static inline int sim_drive_far(const sim *s, int32_t f, int32_t sl) {
+  return s->cfg.gap_check && !s->fflat[f] && s->g.sext[sl] < -DRIVE_REACH * s->g.h;
 }
 /* NORMALS_AUTO takes one normal per patch where flat fields meet */
 static inline int sim_flat_patches(const sim *s) {

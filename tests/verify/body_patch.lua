@@ -1,6 +1,7 @@
 -- Contact between bodies per contact patch (body_contact = "patch",
 -- src/core/contact_patch.c; the default "auto" takes it where a round
--- body meets a flat one) against the node rule (contact.c), on a disc
+-- body meets a flat one with friction) against the node rule
+-- (contact.c), on a disc
 -- meeting a driven (rigid, still) slab, the cases
 -- whose references are rigid-body mechanics:
 --   1. free fall beside the slab: nothing may act before the surfaces
@@ -45,15 +46,13 @@ for _, shape in ipairs {"linear", "gimp", "bspline2"} do
       local r = S.run {cells = c, v0 = {1, 0}, mu = 0, T = 1, n = 10, slab = true, body_contact = rule,
                        scheme = {shape = shape, transfer = "flip", flip = 1}}
       local name = string.format("%s %s %d cells", shape, rule, c)
-      if rule == "patch" then
-        -- measured 0.9997-1.0000
-        V.near(name .. ": vx / v0 at t = 1", r.d.vx, 1, 0.003)
-        V.below(name .. ": |spin| at t = 1", math.abs(r.d.omega), 0.01)
-      else
-        -- measured 0.92-0.94 (linear, GIMP), 0.63-0.69 (B-splines): the
-        -- disc's normals at the nodes ahead of the contact point tilt
-        V.info(name .. ": vx / v0 at t = 1", r.d.vx)
-      end
+      -- measured 0.9997-1.0000 per patch; node by node 1.0000 with the
+      -- slab face's normal (normals "auto", contact.c face()), where the
+      -- difference of the two gradients leaned with the disc's radial
+      -- one ahead of the contact point: 0.92-0.94 (linear, GIMP),
+      -- 0.63-0.69 (B-splines)
+      V.near(name .. ": vx / v0 at t = 1", r.d.vx, 1, 0.003)
+      V.below(name .. ": |spin| at t = 1", math.abs(r.d.omega), 0.01)
     end
   end
 end
@@ -81,10 +80,10 @@ for _, run in ipairs {
     V.info(name .. ": end speed / rolling speed", r.roll)
     V.below(name .. ": |residual| / (E0 + W_b)", math.abs(r.res), 0.005)
     if run.rule == "patch" then
-      -- measured: linear 1.069 / 1.010 / 0.997, GIMP APIC 1.034 / 1.009
+      -- measured: linear 1.080 / 1.018 / 1.002, GIMP APIC 1.038 / 1.013
       if c == 16 then V.below(name .. ": |W / W_rigid - 1|", err[i], 0.02) end
       if c == 32 then V.below(name .. ": |W / W_rigid - 1|", err[i], 0.01) end
-      -- the disc ends rolling (measured 0.93 / 0.98 / 0.995 linear)
+      -- the disc ends rolling (measured 0.95 / 0.98 / 0.995 linear)
       if c >= 16 then V.near(name .. ": end speed / rolling speed", r.roll, 1, 0.03) end
       -- the impacts book next to nothing (node rule: 0.15-0.31 W)
       V.below(name .. ": |impact| / W", math.abs(r.imp), 0.02)
@@ -117,11 +116,11 @@ for _, reg in ipairs {{deg = 25, mu = 0.5, roll = true}, {deg = 30, mu = 0.1}} d
       if rule == "patch" then
         V.below(name .. ": hop / R", r.hop / I.R, 0.01)
         if reg.roll then
-          -- measured 0.932 / 0.982 / 0.985 (goal 2 % at 8 cells, 1 % at
+          -- measured 0.932 / 0.981 / 0.986 (goal 2 % at 8 cells, 1 % at
           -- 16: not met; the wall's patch rule gives 0.934 at 8)
           if c >= 16 then V.below(name .. ": |a / a_ref - 1|", ea[i], 0.025) end
         else
-          -- measured a 0.995 / 0.998 / 0.994, spin-up 0.83 / 0.965 / 1.010
+          -- measured a 0.997 / 1.000 / 0.996, spin-up 0.825 / 0.955 / 1.004
           V.below(name .. ": |a / a_ref - 1|", ea[i], 0.01)
           if c >= 16 then V.below(name .. ": |spin-up / friction torque's - 1|", eal[i], 0.05) end
         end
@@ -136,15 +135,21 @@ end
 
 V.case "the defaults (body_contact = \"auto\"): a disc on a flat body is taken per patch"
 -- "auto" takes the patch rule where a body with flat faces (rect,
--- polygon, box, extrude, not bonded) meets one that is not, and the node
--- rule elsewhere (two discs head on, a block on a slab: normals.lua).
--- On the default shape (B-splines) the node rule held a disc on a slab:
--- measured at 8 / 16 cells, frictionless speed kept 0.63 / 0.69,
--- rolling a / a_ref -0.04 / 0.46, sliding a / a_ref -0.10 / 0.56.
+-- polygon, box, extrude, not bonded) meets one that is not with
+-- friction between them, and the node rule elsewhere (two discs head
+-- on, a block on a slab: normals.lua; without friction: driven_walls.lua).
+-- On the default shape (B-splines) the node rule held a disc on a slab
+-- before the face's normal: measured at 8 / 16 cells, frictionless
+-- speed kept 0.63 / 0.69, rolling a / a_ref -0.04 / 0.46, sliding
+-- a / a_ref -0.10 / 0.56 (with it 1.0000 / 1.0000, 0.55 / 0.84,
+-- 0.95 / 1.00).
 -- Under "auto", measured: speed 1.0000; sliding a 0.998 / 1.000 /
--- 0.997 and spin-up 0.68 / 0.89 / 0.985 at 8 / 16 / 32 cells; rolling
--- 0.78 / 0.93 / 0.96; thrown, friction work 1.39 / 1.16 / 1.065 of the
--- rigid disc's (falling; linear hats 1.069 / 1.010 / 0.997).
+-- 0.996 and spin-up 0.80 / 0.958 / 1.034 at 8 / 16 / 32 cells; rolling
+-- 0.914 / 0.984 / 1.000; thrown, friction work 1.107 / 1.023 / 1.000 of
+-- the rigid disc's (falling; linear hats 1.080 / 1.018 / 1.002).  With
+-- the slab's mass-gradient normals leaning with the disc's and the
+-- patch taking the disc's nodes a cell inside, these read 0.68 / 0.89 /
+-- 0.985, 0.78 / 0.93 / 0.96 and 1.39 / 1.16 / 1.065.
 do
   local function node_and_auto(c)
     local r = {}
@@ -167,7 +172,11 @@ do
     V.info(name .. ", node rule: the same", r.node.vx)
     V.near(name .. ", the defaults: sliding a / a_ref (30 deg, mu 0.1)", r.default.slide, 1, 0.01)
     V.info(name .. ", node rule: the same", r.node.slide)
-    V.info(name .. ", the defaults: spin-up / friction torque's (5 % wanted at 16 cells)", r.default.spin)
+    if c == 16 then
+      V.near(name .. ", the defaults: spin-up / friction torque's (5 % wanted)", r.default.spin, 1, 0.05)
+    else
+      V.info(name .. ", the defaults: spin-up / friction torque's (5 % wanted at 16 cells)", r.default.spin)
+    end
     V.info(name .. ", the defaults: rolling a / a_ref (25 deg, mu 0.5; 2 % wanted at 8, 1 % at 16)", r.default.roll)
     V.info(name .. ", node rule: the same", r.node.roll)
     local t = S.run {cells = c, scheme = {}, mu = 0.3, T = 2, n = 40, slab = true}

@@ -304,8 +304,8 @@ static void label(sim *s, int far) {
 ** velocity change cannot move its pressure to the leading edge), and
 ** without friction the patch buys no torque and its impacts lose more
 ** than the node rule's (the report's bounce with driven bodies for
-** walls: -9.7 / -5.8 / -1.7 % after three impacts at 8 / 16 / 32 cells
-** against -7.5 / -3.8 / -1.4 %), as at the walls (boundary.c). */
+** walls: -9.5 / -5.7 / -1.7 % after three impacts at 8 / 16 / 32 cells
+** against -7.5 / -3.9 / -1.4 %), as at the walls (boundary.c). */
 void contact_patches(sim *s, int dry) {
   grid *g = &s->g;
   int32_t *lab = s->work.cplab, *list = s->work.cplist;

@@ -7,6 +7,7 @@
 -- bounce in a box of driven bodies).  Run by `make figures` (about four
 -- minutes).
 local mvmpm = require "mvmpm"
+local W = dofile("tests/tools/walls.lua") -- the bounce run the wall tests share
 local runs = {
   {"grid's walls", {walls = "grid"}},
   {"driven bodies, faces on node lines", {walls = "driven"}},
@@ -17,18 +18,10 @@ local energy, rest = {}, {}
 for _, r in ipairs(runs) do
   local x, ye, yr = {}, {}, {}
   for _, n in ipairs(cells) do
-    local p = {cells = n, t_end = 36}
-    for k, v in pairs(r[2]) do p[k] = v end
-    local sim = mvmpm.load("scenarios/cylinder_bounce.lua", p)
-    local disc = sim:bodies()[1]
-    local e0 = sim:energy().total
-    sim:run(10)
-    local e = -disc:diag().vx / 0.1
-    sim:run(36)
-    local de = sim:energy().total / e0 - 1
+    local b = W.bounce(mvmpm, n, nil, r[2])
     print(string.format("frictionless bounce, %-38s %2d cells: E/E0 - 1 after three impacts %+.4f, restitution %.4f",
-                        r[1], n, de, e))
-    x[#x + 1], ye[#ye + 1], yr[#yr + 1] = n, math.abs(de), e
+                        r[1], n, b.three, b.rest))
+    x[#x + 1], ye[#ye + 1], yr[#yr + 1] = n, math.abs(b.three), b.rest
   end
   energy[#energy + 1] = {x = x, y = ye, label = r[1], style = "both"}
   rest[#rest + 1] = {x = x, y = yr, label = r[1], style = "both"}

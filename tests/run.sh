@@ -5,7 +5,9 @@
 # single-threaded unless it asks for threads itself).  Each job's output
 # is printed whole, in the order of the list, as soon as it and all
 # before it have finished, so a log reads the same at any JOBS.  The
-# last line adds them all up: "N passed, M failed".
+# last line adds them all up: "N passed, M failed".  Each job's wall
+# time follows its output, and the slowest are listed before the count,
+# so a log shows where the suite's time goes.
 #
 # LIGHT=1 (make test SAN=1) leaves out the files named in tests/heavy:
 # the convergence ladders whose finest rungs take an hour and more under
@@ -33,7 +35,8 @@ for t in tests/fault/*.sh; do [ "$(basename "$t")" = lib.sh ] || items+=("fault 
 n=${#items[@]}
 
 job() { # job INDEX KIND PATH: its output in INDEX.log, its status in INDEX.rc
-  local i=$1 kind=$2 path=$3 rc
+  local i=$1 kind=$2 path=$3 rc t0
+  t0=$(date +%s.%N)
   case $kind in
     lua) "./$bin" test "$path" ;;
     unit) "$path" ;;
@@ -41,6 +44,7 @@ job() { # job INDEX KIND PATH: its output in INDEX.log, its status in INDEX.rc
     fault) bash "$path" "$bin" ;;
   esac >"$work/$i.log" 2>&1
   rc=$?
+  echo "$t0 $(date +%s.%N)" | awk '{ printf "%.1f\n", $2 - $1 }' >"$work/$i.t"
   echo "$rc" >"$work/$i.rc.tmp" && mv "$work/$i.rc.tmp" "$work/$i.rc"
 }
 export -f job
@@ -58,7 +62,8 @@ for i in "${!items[@]}"; do
     sleep 0.2
   done
   read -r kind path <<<"${items[$i]}"
-  log=$work/$i.log rc=$(cat "$work/$i.rc")
+  log=$work/$i.log rc=$(cat "$work/$i.rc") secs=$(cat "$work/$i.t")
+  echo "$secs $path" >>"$work/times"
   # the Lua files print every check; the others their failures and count
   if [ "$kind" = lua ]; then cat "$log"
   else grep -E '^(FAIL|skip)' "$log"; tail -1 "$log"; fi
@@ -73,10 +78,12 @@ for i in "${!items[@]}"; do
   if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
     echo "FAIL $path: exited with status $rc"; fail=$((fail + 1))
   fi
+  echo "time $path: $secs s"
 done
 wait "$runner"
 echo
-echo "$n jobs, $jobs at a time"
+echo "$n jobs, $jobs at a time; the slowest (wall seconds):"
+sort -rn "$work/times" 2>/dev/null | head -8 | sed 's/^/  /'
 for t in ${skipped[@]+"${skipped[@]}"}; do echo "skip $t (tests/heavy; SAN_FULL=1 runs it)"; done
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

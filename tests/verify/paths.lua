@@ -137,3 +137,41 @@ do
   -- measured equal to round-off (faces on node lines)
   V.below("|driven - grid walls| after the first impact", math.abs(e.driven - e.grid), 1e-3)
 end
+
+V.case "two discs head on and glancing, 20 cells across, frictionless (two_disks.lua)"
+do
+  local C = require "mvmpm.normals"
+  -- the defaults head on: measured -2.97 % at 20 cells
+  local h = C.discs {cells = 20, shape = "bspline2", method = "mass/0", offset = 0}
+  V.holds("head on: energy finite", finite(h.total))
+  V.below("head on: |total energy after / before - 1|", math.abs(h.total - 1), 0.05)
+  V.below("head on: |momentum| / one disc's (equal discs, opposite velocities)",
+    math.abs(h.a.mass * h.a.vx + h.b.mass * h.b.vx) / (h.a.mass * 0.1), 1e-9)
+  V.above("head on: separating along the line of centres after", (h.b.vx - h.a.vx) + (h.b.vy - h.a.vy), 0)
+  -- GIMP with "maxvolume"/4 glancing: measured 2.2 % of the tangential
+  -- velocity lost, |Jt / Jn| 0.003 at 20 cells
+  local g = C.discs {cells = 20, shape = "gimp", method = "maxvolume/4", offset = 0.2}
+  V.below("glancing: tangential relative velocity lost", math.abs(g.kept - 1), 0.1)
+  V.below("glancing: |Jt / Jn|", math.abs(g.jt), 0.02)
+  V.below("glancing: kinetic + strain after / before (frictionless)", g.energy, 1.001)
+end
+
+V.case "two spheres head on, 6 cells per diameter (d3_spheres.lua)"
+do
+  local r = require("mvmpm.spheres3").run(6, 0, 5)
+  V.holds("energy finite", finite(r.energy))
+  V.below("energy change E(5)/E0 - 1 (no gain)", r.energy, 0.001)
+  for d, n in ipairs {"x", "y", "z"} do
+    V.below(string.format("largest |p_%s - p_%s(0)| / (m v)", n, n), r.dp[d], 1e-12)
+  end
+  V.holds("no particle inside the other sphere (t = 1..5)", r.overlap == 0, r.overlap)
+  V.above("separating along the line of centres after", r.vn, 0.1)
+end
+
+V.case "concentric spheres, bonded, cooled, 6 cells across the shell (d3_concentric.lua)"
+do
+  local r = require("mvmpm.lame").sphere.run {cells = 6, shape = "linear"}
+  -- measured within 1 % of Lame at 6, 8, 10 cells
+  V.near("sphere's sigma_rr / s", r.inner, 1, 0.03)
+  V.near("sigma_rr at the interface's cells / s", r.band, 1, 0.03)
+end

@@ -175,3 +175,11 @@ do
   V.near("sphere's sigma_rr / s", r.inner, 1, 0.03)
   V.near("sigma_rr at the interface's cells / s", r.band, 1, 0.03)
 end
+
+V.case "debond front with the fitted traction over 0.1, 16 cells (bonds_long.lua)"
+do
+  -- measured 0.684 c_R at 16 cells
+  local v = require("mvmpm.front").run {cells = 16, traction = "fit", bond_length = 0.1}
+  V.below("front speed / c_R (must not exceed 1)", v, 1.0)
+  V.above("front speed / c_R (a front runs)", v, 0.5)
+end

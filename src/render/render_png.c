@@ -446,6 +446,46 @@ static double det_at(const particles *ps, size_t i) {
 ** raster picture (particle(): the seams between particles) */
 #define RENDER_SEAL 0.35
 
+/* The stretch a particle's square is drawn with at most (the larger of
+** its image's singular values over the smaller).  Sheared on, F maps
+** the square to a needle that reaches far past the particles about it,
+** which stay near: a binder particle of a sheared PBX bed at strain 1
+** reached a stretch of 3,000, and drawn so (the seal below gives a needle
+** a pixel's width) it streaked across the grains beside it.  Beyond
+** this, the square is drawn with its stretch limited to this ratio,
+** along the same axes and with the same area. */
+#define RENDER_STRETCH 4.0
+
+/* the half edges e (columns: e[k] is edge k's image) with their stretch
+** limited to RENDER_STRETCH: e <- e V diag(t_1 / s_1, t_2 / s_2) V^T,
+** where e = U diag(s_1, s_2) V^T and t_1 t_2 = s_1 s_2 (the area) */
+static void limit_stretch(double e[2][2]) {
+  double a = e[0][0], b = e[1][0], c = e[0][1], d = e[1][1]; /* [[a b] [c d]] */
+  double A = a * a + c * c, B = b * b + d * d, P = a * b + c * d;
+  double q = A + B, det = fabs(a * d - b * c);
+  double disc = sqrt(fmax(q * q - 4 * det * det, 0));
+  double s1 = sqrt(0.5 * (q + disc)), s2 = det / s1, v[2], n, f1, f2;
+  double m[2][2];
+  int k, r;
+  if (!(s2 > 0) || s1 <= RENDER_STRETCH * s2) return;
+  /* v: e^T e's eigenvector of s1^2, the stretched axis in the square */
+  if (A >= B) { v[0] = s1 * s1 - B; v[1] = P; }
+  else { v[0] = P; v[1] = s1 * s1 - A; }
+  n = hypot(v[0], v[1]);
+  v[0] /= n;
+  v[1] /= n;
+  f1 = sqrt(det * RENDER_STRETCH) / s1;
+  f2 = sqrt(det / RENDER_STRETCH) / s2;
+  /* m = f1 v v^T + f2 w w^T (w the normal to v), then e <- e m */
+  m[0][0] = f1 * v[0] * v[0] + f2 * v[1] * v[1];
+  m[1][1] = f1 * v[1] * v[1] + f2 * v[0] * v[0];
+  m[0][1] = m[1][0] = (f1 - f2) * v[0] * v[1];
+  for (r = 0; r < 2; r++) { /* component r of each column */
+    double x0 = e[0][r], x1 = e[1][r];
+    for (k = 0; k < 2; k++) e[k][r] = x0 * m[0][k] + x1 * m[1][k];
+  }
+}
+
 /* half the side of particle i's cube (square in 2-D) */
 static double halfside(const particles *ps, size_t i) {
   double v = ps->vol0[i] > 0 ? ps->vol0[i] : 0;
@@ -470,6 +510,7 @@ static void particle(pen *p, const render_layout *L, const particles *ps,
   }
   cx = L->dx0 + (ps->x[h][i] - o->lo[0]) * L->sc;
   cy = L->dy0 + (o->hi[1] - ps->x[u][i]) * L->sc;
+  limit_stretch(e);
   for (k = 0; k < 2; k++) { /* the half edges, in pixels */
     e[k][0] *= a * L->sc;
     e[k][1] *= a * L->sc;

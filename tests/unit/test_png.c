@@ -259,6 +259,52 @@ static void test_render_body(void) {
   particles_free(&ps);
 }
 
+/* A particle sheared on: F = [[1, g], [0, 1]].  At g = 1 (stretch 2.6)
+** its square is drawn as F maps it (a point only the sheared square
+** covers is coloured); at g = 1000 (a PBX bed's sheared binder reached a
+** stretch of 3,000, drawn as streaks across the grains) it is drawn
+** with a stretch of 4 along the same axes and the same area: nothing
+** past 2.5 half sides and the seal, and about the square's area. */
+static void test_render_stretch(void) {
+  const double a = 0.05, gs[2] = {1, 1000};
+  int k;
+  for (k = 0; k < 2; k++) {
+    particles ps;
+    render_opts o = unit_square("body", 400);
+    render_layout L;
+    canvas c;
+    char err[512];
+    int x, y, px, py, drawn = 0, far = 0;
+    double pix, g = gs[k];
+    store(&ps, 1, 2 * a);
+    ps.x[0][0] = ps.x[1][0] = 0.5;
+    ps.F[0][0] = 1; ps.F[1][0] = g; ps.F[2][0] = 0; ps.F[3][0] = 1;
+    ps.body[0] = 0;
+    UNIT_CHECK(render_draw(&c, &L, &ps, &o, err, sizeof err) == 0, "render_draw: %s", err);
+    pix = (L.dx1 - L.dx0) / (o.hi[0] - o.lo[0]); /* pixels per unit */
+    for (y = L.dy0; y < L.dy1; y++)
+      for (x = L.dx0; x < L.dx1; x++) {
+        double wx = o.lo[0] + (x + 0.5 - L.dx0) / pix - 0.5;
+        double wy = o.hi[1] - (y + 0.5 - L.dy0) / pix - 0.5;
+        if (canvas_get(&c, x, y) != cmap_category(0)) continue;
+        drawn++;
+        if (hypot(wx, wy) > 2.5 * a + 2 / pix) far++;
+      }
+    if (k == 0) {
+      at(&L, &o, 0.5 + 1.8 * a, 0.5 + 0.9 * a, &px, &py);
+      UNIT_CHECK(canvas_get(&c, px, py) == cmap_category(0),
+                 "shear 1: the sheared square's corner (1.8, 0.9) half sides out is drawn");
+    } else {
+      UNIT_CHECK(far == 0, "shear 1000: no pixel past 2.5 half sides (%d)", far);
+      UNIT_CHECK(fabs(drawn / (4 * a * a * pix * pix) - 1) < 0.2,
+                 "shear 1000: drawn area / the square's = %.3f (within 20 %%)",
+                 drawn / (4 * a * a * pix * pix));
+    }
+    canvas_free(&c);
+    particles_free(&ps);
+  }
+}
+
 /* a turned body whose particles do not abut exactly (each moved a
 ** little on its own, as a sheared grain's are): no pixel inside it is
 ** background (before, seams thinner than a pixel left white pinholes
@@ -889,6 +935,7 @@ int main(int argc, char **argv) {
   test_png_unwritable();
   test_render_body();
   test_render_seams();
+  test_render_stretch();
   test_render_scalar();
   test_values();
   test_deterministic();

@@ -449,9 +449,10 @@ static double det_at(const particles *ps, size_t i) {
 /* The stretch a particle's square is drawn with at most (the larger of
 ** its image's singular values over the smaller).  Sheared on, F maps
 ** the square to a needle that reaches far past the particles about it,
-** which stay near: a binder particle of a sheared PBX bed at strain 1
-** reached a stretch of 3,000, and drawn so (the seal below gives a needle
-** a pixel's width) it streaked across the grains beside it.  Beyond
+** which stay near: at strain 1 a sheared PBX bed's binder particles
+** reached stretches of 10^6 and its grains' of 4,000, and drawn so (the
+** seal below gives a needle a pixel's width) they streaked across the
+** grains.  Beyond
 ** this, the square is drawn with its stretch limited to this ratio,
 ** along the same axes and with the same area. */
 #define RENDER_STRETCH 4.0

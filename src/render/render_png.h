@@ -5,8 +5,9 @@
 ** particle's F about its position, so stretched, sheared and rotated
 ** particles look it; on a raster each reaches 0.35 pixel past its edges,
 ** so that the seams between a turned body's particles do not show as
-** pinholes (in an SVG it is exact); a square stretched more than 4 : 1 is
-** drawn stretched 4 : 1 along the same axes with the same area.  Particles are drawn in store order over a white
+** pinholes (in an SVG it is exact); a square stretched more than 4 : 1
+** is drawn stretched 4 : 1 along the same axes with the same area.
+** Particles are drawn in store order over a white
 ** background inside the domain's outline, y up; the image is width
 ** pixels wide and as high as the domain's aspect needs, plus a title
 ** line and, on the right, a colour bar (scalars) or a legend (bodies).

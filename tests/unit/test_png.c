@@ -261,8 +261,8 @@ static void test_render_body(void) {
 
 /* A particle sheared on: F = [[1, g], [0, 1]].  At g = 1 (stretch 2.6)
 ** its square is drawn as F maps it (a point only the sheared square
-** covers is coloured); at g = 1000 (a PBX bed's sheared binder reached a
-** stretch of 3,000, drawn as streaks across the grains) it is drawn
+** covers is coloured); at g = 1000 (a sheared PBX bed's particles reached
+** stretches of 10^6, drawn as streaks across the grains) it is drawn
 ** with a stretch of 4 along the same axes and the same area: nothing
 ** past 2.5 half sides and the seal, and about the square's area. */
 static void test_render_stretch(void) {

@@ -15,7 +15,7 @@ local V = require "mvmpm.verify"
 -- slower (at 16 cells the 0.2 one does not run at all: 3 cells are too
 -- few to resolve it).  The speeds' convergence (16 to 48 cells) is in
 -- studies/debond_front.lua.
-V.case "the same front with the fitted traction over a fixed length"
+V.case "a debond front with the fitted traction over a fixed length (scenarios/debond_front.lua)"
 do
   local F = require "mvmpm.front"
   local v = {}

@@ -51,7 +51,7 @@ print(string.format(
   "pbx   %6d grains %9d particles  %.4f s/step  %7.2f steps/s  %6.1f ns/particle-step  "
   .. "(CPU %.4f s/step, %6.1f ns)  alloc %.0f MB  peak RSS %.0f MB  (%d steps timed x %d)",
   st.count, sim.n, sec, 1 / sec, 1e9 * sec / sim.n, cpu, 1e9 * cpu / sim.n,
-  (mem.particles + mem.grid) / 2^20, hwm() / 2^20, n, B.reps))
+  (mem.particles + mem.grid + mem.contact) / 2^20, hwm() / 2^20, n, B.reps))
 print(string.format(
   "pbx   100 %% strain at %.3g/s: t = %.3g s, dt = %.3g s, %.3g steps, %.3g h wall "
   .. "(%.3g h CPU) on one core", 1e5, sim.t_end, sim.dt, steps, steps * sec / 3600,

@@ -93,8 +93,9 @@ for _, c in ipairs {{"block 400x400 linear MUSL", block}, {"block in two bodies"
   end
   local mem = sims[2].memory
   B.line("memory", string.format("(e) %s, 2 threads / particle", c[1]),
-    (mem.particles + mem.grid + mem.threads) / sims[2].n, "bytes",
-    string.format("of which partial sums and plan %d bytes in all", mem.threads))
+    (mem.particles + mem.grid + mem.threads + mem.contact) / sims[2].n, "bytes",
+    string.format("of which partial sums and plan %d bytes, contact's records %d bytes in all",
+      mem.threads, mem.contact))
   local lo, hi = math.huge, 0
   for _, q in ipairs(ratio) do lo, hi = math.min(lo, q), math.max(hi, q) end
   B.line("ratio", string.format("(e) %s: speed-up 2 / 1 thread", c[1]), B.median(ratio),

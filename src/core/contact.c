@@ -1032,6 +1032,15 @@ static int grow(void **p, size_t *cap, size_t need, size_t size) {
   return 0;
 }
 
+/* contact's records, and the slots of the particles' stencils p2g finds
+** (sim.h, room made by p2g_mark) */
+size_t contact_mem(const sim *s) {
+  const sim_work *wk = &s->work;
+  return wk->pslotcap * sizeof *wk->pslot +
+         wk->cnodecap * (CREC * sizeof *wk->crec + sizeof *wk->cbody) +
+         wk->cplistcap * sizeof *wk->cplist + (wk->cplab ? s->g.nnodes * sizeof *wk->cplab : 0);
+}
+
 int contact_prepare(sim *s) {
   sim_work *wk = &s->work;
   const grid *g = &s->g;

@@ -217,7 +217,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     double l[NTENS] = {0}, bm[NTENS] = {0}, dvr[NTENS] = {0};
     double aref = 0, aff = 0;
     const body *b = &bd[ps->body[i]];
-    int32_t slot[STENCIL_MAX];
+    const int32_t *slot = shared ? wk->pslot + i * stencil_size(kind) : NULL;
     int k;
     for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; vp[a] = ps->v[a][i]; }
     if (apic) stencil_eval_r(&geo, kind, x, lp, &st, r);
@@ -225,11 +225,10 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double w = st.w[k], q[DIM], fo[DIM];
-      if (shared && g->head[n] >= 0) {
-        int32_t sl = slot[k] = grid_slot(g, n, b->field);
+      if (shared && slot[k] >= 0) {
+        int32_t sl = slot[k];
         for (a = 0; a < DIM; a++) { q[a] = g->sq[a][sl]; fo[a] = g->sf[a][sl]; }
       } else {
-        if (shared) slot[k] = -1;
         for (a = 0; a < DIM; a++) { q[a] = gq[a][n]; fo[a] = gf[a][n]; }
       }
       for (a = 0; a < DIM; a++) { v[a] += w * q[a]; ac[a] += w * fo[a]; }
@@ -344,7 +343,6 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
   sim_work *wk = &s->work;
   grid *g = &s->g;
   const particles *ps = &s->ps;
-  const body *bd = s->bodies;
   const double lp = cfg->lp;
   const int rowlen = stencil_rowlen(kind);
   double *restrict gp[DIM];
@@ -362,7 +360,7 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
   for (i = i0; i < i1; i++) {
     double x[DIM], nv[DIM];
     const double mp = ps->m[i];
-    int32_t f = bd[ps->body[i]].field;
+    const int32_t *slot = shared ? wk->pslot + i * stencil_size(kind) : NULL;
     int k;
     for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; nv[a] = ps->v[a][i]; }
     if (split &&
@@ -383,10 +381,8 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
         }
         gp[a][n] += wm * uu[a];
       }
-      if (shared && g->head[n] >= 0) {
-        int32_t sl = grid_slot(g, n, f);
-        for (a = 0; a < DIM; a++) g->sp[a][sl] += wm * uu[a];
-      }
+      if (shared && slot[k] >= 0)
+        for (a = 0; a < DIM; a++) g->sp[a][slot[k]] += wm * uu[a];
     }
   }
 }
@@ -537,7 +533,6 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   particles *ps = &s->ps;
-  const body *bd = s->bodies;
   const double dt = s->dt, lp = cfg->lp;
   const int lossy = sim_lossy(cfg), apic = cfg->transfer == TRANSFER_APIC;
   const double *restrict gp[DIM], *restrict gq[DIM];
@@ -551,22 +546,19 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   box_init(&bx, s);
   for (i = i0; i < i1; i++) {
     double x[DIM], v[DIM] = {0}, l[NTENS] = {0};
-    int32_t f = bd[ps->body[i]].field, slot[STENCIL_MAX];
+    const int32_t *slot = shared ? s->work.pslot + i * stencil_size(kind) : NULL;
     int k;
     for (a = 0; a < DIM; a++) x[a] = ps->x[a][i];
     stencil_eval(&geo, kind, x, lp, &st);
     /* the velocity and the gradient in two loops over the nodes: each
     ** sum in the same order as in one, with fewer sums live at once (one
-    ** loop over 9 or 27 nodes, unrolled, ran out of registers); the
-    ** first finds the slots, the second reuses them */
+    ** loop over 9 or 27 nodes, unrolled, ran out of registers) */
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double q[DIM];
-      if (shared && g->head[n] >= 0) {
-        int32_t sl = slot[k] = grid_slot(g, n, f);
-        for (a = 0; a < DIM; a++) q[a] = g->sq[a][sl];
+      if (shared && slot[k] >= 0) {
+        for (a = 0; a < DIM; a++) q[a] = g->sq[a][slot[k]];
       } else {
-        if (shared) slot[k] = -1;
         for (a = 0; a < DIM; a++) q[a] = gq[a][n];
       }
       for (a = 0; a < DIM; a++) v[a] += st.w[k] * q[a];

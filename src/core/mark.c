@@ -225,6 +225,18 @@ static void slots_part(void *arg, int t, int nparts) {
   grid_slots_clear(g, s0, sl);
 }
 
+/* room for the slots p2g finds for each particle's stencil (sim.h), as
+** many particles as the store has room for: it grows only when bodies
+** are added */
+static int pslot_room(sim *s) {
+  sim_work *wk = &s->work;
+  size_t need = s->ps.cap * (size_t)stencil_size(s->cfg.shape);
+  if (need <= wk->pslotcap) return 0;
+  GROW(wk->pslot, need);
+  wk->pslotcap = need;
+  return 0;
+}
+
 /* a marking that ran out of room, undone: every node it touched is
 ** unowned again and no node has marks */
 static void undo(grid *g, const marks *mk) {
@@ -274,6 +286,7 @@ int p2g_mark(sim *s) {
     if (mk->used[t] > most) most = mk->used[t];
   }
   if (nshared) {
+    if (pslot_room(s)) return -1;
     if (grid_slots_reserve(g, g->slotcap, nshared)) return -1;
     run(wk, order_part, s);
     for (t = 0; t < mk->nparts; t++) { /* each part's first slot */

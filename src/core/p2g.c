@@ -68,6 +68,7 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
     double x[DIM], v0[DIM], F[NTENS], sv[DIM][DIM];
     double mp = ps->m[i], J, V;
     int32_t f = bd[ps->body[i]].field;
+    int32_t *slot = shared ? wk->pslot + i * stencil_size(kind) : NULL;
     double wg;
     int k;
     for (a = 0; a < DIM; a++) { x[a] = ps->x[a][i]; v0[a] = ps->v[a][i]; }
@@ -105,8 +106,13 @@ STENCIL_INLINE void p2g_kind(sim *s, const int kind, const int shared,
       }
       if (force)
         for (a = 0; a < DIM; a++) gf[a][n] += fo[a];
-      if (shared && g->head[n] >= 0) {
-        int32_t sl = grid_slot(g, n, f);
+      if (shared) {
+        int32_t sl;
+        if (mass) /* found here once a step, for the passes after (sim.h) */
+          sl = slot[k] = g->head[n] >= 0 ? grid_slot(g, n, f) : -1;
+        else
+          sl = slot[k];
+        if (sl < 0) continue;
         if (force)
           for (a = 0; a < DIM; a++) g->sf[a][sl] += fo[a];
         if (!mass) continue;

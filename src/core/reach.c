@@ -89,20 +89,18 @@ static void walls(const sim *s, size_t i, const wreach *w) {
   }
 }
 
-/* The reach of particle i into the slots of its shared stencil nodes;
-** with a plan (mine != NULL), only into the node rows this pass writes.
-** Compiled per shape kind, with the node indices and the offsets to the
-** particle taken along each axis once: most stencil nodes are not
-** shared, and for them the test of head is all the work. */
+/* The reach of particle i into the slots of its shared stencil nodes
+** (the slots p2g found, sim.h); with a plan (mine != NULL), only into
+** the node rows this pass writes.  Compiled per shape kind, with the
+** offsets to the particle taken along each axis once. */
 STENCIL_INLINE void shared_kind(sim *s, const int kind,
                                 const stencil_geo *geo, size_t i,
                                 const unsigned char *mine) {
   const grid *g = &s->g;
   const particles *ps = &s->ps;
-  const int32_t *head = g->head;
+  const int32_t *slot = s->work.pslot + i * stencil_size(kind);
   const double l = s->cfg.lp * g->h;
   const int nw = shape_width(kind);
-  int32_t idx[DIM][SHAPE_MAXW], f = -1;
   double dx[DIM][SHAPE_MAXW];
   int t[DIM], nn = 1, d, a, k;
   for (d = 0; d < DIM; d++) {
@@ -117,7 +115,6 @@ STENCIL_INLINE void shared_kind(sim *s, const int kind,
         if (r > 0.5 * L) r -= L;
         else if (r < -0.5 * L) r += L;
       }
-      idx[d][a] = ia;
       dx[d][a] = r;
     }
     t[d] = 0;
@@ -125,15 +122,9 @@ STENCIL_INLINE void shared_kind(sim *s, const int kind,
   }
   /* an odometer over the DIM indices, x fastest */
   for (k = 0; k < nn; k++) {
-    int in[DIM];
-    int32_t n;
-    for (d = 0; d < DIM; d++) in[d] = idx[d][t[d]];
-    n = grid_node(g, in);
-    if (head[n] >= 0 && (!mine || mine[t[BANDS_DIM]])) {
+    const int32_t sl = slot[k];
+    if (sl >= 0 && (!mine || mine[t[BANDS_DIM]])) {
       double e = 0, nrm1 = 0;
-      int32_t sl;
-      if (f < 0) f = s->bodies[ps->body[i]].field;
-      sl = grid_slot(g, n, f);
       for (d = 0; d < DIM; d++) {
         e += dx[d][t[d]] * g->sn[d][sl];
         nrm1 += fabs(g->sn[d][sl]);

@@ -117,6 +117,7 @@ void sim_free(sim *s) {
   free(s->work.cplist);
   free(s->work.bfit);
   free(s->work.bffield);
+  free(s->work.pslot);
   free(s->work.prof);
   heat_free(s);
   memset(s, 0, sizeof *s);

@@ -288,6 +288,13 @@ typedef struct sim_work {
   ** belong to */
   double *bfit;
   int32_t *bffield;
+  /* p2g.c: per particle the slot of each node of its stencil, in
+  ** stencil_eval's order (-1: the node is not shared), stencil_size
+  ** per particle; found once a step by p2g's scatter, read by the passes
+  ** after it (reach, g2p, the remap, USAVG's gradient, XPIC) until the
+  ** particles move.  Made by p2g_mark, only where nodes are shared. */
+  int32_t *pslot;
+  size_t pslotcap;   /* ... entries */
   struct sim_prof *prof; /* time per phase, when profiling (prof.h) */
 } sim_work;
 
@@ -502,7 +509,8 @@ void sim_measure(sim *s);
 /* phases (one file each) */
 void p2g_plan(sim *s);         /* p2g.c: the scatter plan of the step
                                   (bands.h), before marking and p2g */
-int p2g_mark(sim *s);          /* mark.c: shared nodes and their slots;
+int p2g_mark(sim *s);          /* mark.c: shared nodes and their slots,
+                                  room for the particles' (work.pslot);
                                   0 or -1 (out of memory) */
 void p2g(sim *s);              /* p2g.c: mass, momentum, force (USAVG:
                                   mass and momentum) */
@@ -519,6 +527,7 @@ void reach(sim *s);            /* reach.c: surfaces, for the gap check */
 ** upper bound where a third field reaches the column) */
 double sim_wall_reach(const side *sd, size_t j, int32_t f);
 int contact_prepare(sim *s);   /* contact.c: room for its records */
+size_t contact_mem(const sim *s); /* ... their bytes, and the slots p2g found */
 void contact_apply(sim *s);    /* contact.c: corrects q at shared nodes */
 void contact_patches(sim *s, int dry); /* contact_patch.c: ... per
                                   contact patch (body_contact = "patch",

@@ -162,6 +162,13 @@ STENCIL_INLINE void stencil_eval_r(const stencil_geo *geo, int kind,
 #endif
 }
 
+/* the nodes of a stencil, nw^DIM */
+STENCIL_INLINE int stencil_size(int kind) {
+  int r = 1, d;
+  for (d = 0; d < DIM; d++) r *= shape_width(kind);
+  return r;
+}
+
 /* stencil entries per node row along the last dimension: entry k lies
 ** on row k / stencil_rowlen (bands.h) */
 STENCIL_INLINE int stencil_rowlen(int kind) {

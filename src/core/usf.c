@@ -48,7 +48,6 @@ STENCIL_INLINE void gradient_kind(sim *s, const int kind, const int shared,
   const sim_cfg *cfg = &s->cfg;
   const grid *g = &s->g;
   particles *ps = &s->ps;
-  const body *bd = s->bodies;
   const double lp = cfg->lp;
   const double *restrict gq[DIM];
   stencil_geo geo;
@@ -59,16 +58,15 @@ STENCIL_INLINE void gradient_kind(sim *s, const int kind, const int shared,
   stencil_geo_init(&geo, g);
   for (i = i0; i < i1; i++) {
     double x[DIM], l[NTENS] = {0};
-    int32_t f = bd[ps->body[i]].field;
+    const int32_t *slot = shared ? s->work.pslot + i * stencil_size(kind) : NULL;
     int k;
     for (a = 0; a < DIM; a++) x[a] = ps->x[a][i];
     stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       double q[DIM];
-      if (shared && g->head[n] >= 0) {
-        int32_t sl = grid_slot(g, n, f);
-        for (a = 0; a < DIM; a++) q[a] = g->sq[a][sl];
+      if (shared && slot[k] >= 0) {
+        for (a = 0; a < DIM; a++) q[a] = g->sq[a][slot[k]];
       } else {
         for (a = 0; a < DIM; a++) q[a] = gq[a][n];
       }

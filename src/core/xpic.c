@@ -40,7 +40,6 @@ STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared,
   const sim_cfg *cfg = &s->cfg;
   grid *g = &s->g;
   particles *ps = &s->ps;
-  const body *bd = s->bodies;
   const double lp = cfg->lp;
   stencil_geo geo;
   stencil st;
@@ -49,18 +48,16 @@ STENCIL_INLINE void apply_kind(sim *s, const int kind, const int shared,
   for (i = 0; i < ps->n; i++) {
     double x[DIM], u[DIM] = {0};
     const double mp = ps->m[i];
-    int32_t f = bd[ps->body[i]].field, slot[STENCIL_MAX];
+    const int32_t *slot = shared ? s->work.pslot + i * stencil_size(kind) : NULL;
     int k, d;
     for (d = 0; d < DIM; d++) x[d] = ps->x[d][i];
     stencil_eval(&geo, kind, x, lp, &st);
     for (k = 0; k < st.n; k++) {
       int32_t n = st.node[k];
       const double w = st.w[k];
-      if (shared && g->head[n] >= 0) {
-        int32_t sl = slot[k] = grid_slot(g, n, f);
-        for (d = 0; d < DIM; d++) u[d] += w * g->sf[d][sl];
+      if (shared && slot[k] >= 0) {
+        for (d = 0; d < DIM; d++) u[d] += w * g->sf[d][slot[k]];
       } else {
-        if (shared) slot[k] = -1;
         for (d = 0; d < DIM; d++) u[d] += w * g->f[d][n];
       }
     }

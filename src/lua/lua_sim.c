@@ -1116,6 +1116,7 @@ static int lindex(lua_State *L) {
                                              s->work.wextn * sizeof *s->work.wext : 0)));
     setnum(L, "capacity", (double)s->ps.cap);
     setnum(L, "grid", (double)grid_mem(&s->g));
+    setnum(L, "contact", (double)contact_mem(s));
   }
   else if (strcmp(k, "outdir") == 0) lua_pushstring(L, ls->outdir);
   else if (strcmp(k, "update") == 0) lua_pushstring(L, update_names[s->cfg.update]);

@@ -452,9 +452,8 @@ static double det_at(const particles *ps, size_t i) {
 ** which stay near: at strain 1 a sheared PBX bed's binder particles
 ** reached stretches of 10^6 and its grains' of 4,000, and drawn so (the
 ** seal below gives a needle a pixel's width) they streaked across the
-** grains.  Beyond
-** this, the square is drawn with its stretch limited to this ratio,
-** along the same axes and with the same area. */
+** grains.  Beyond this, the square is drawn with its stretch limited to
+** this ratio, along the same axes and with the same area. */
 #define RENDER_STRETCH 4.0
 
 /* the half edges e (columns: e[k] is edge k's image) with their stretch

@@ -7,10 +7,10 @@
 ** so that the seams between a turned body's particles do not show as
 ** pinholes (in an SVG it is exact); a square stretched more than 4 : 1
 ** is drawn stretched 4 : 1 along the same axes with the same area.
-** Particles are drawn in store order over a white
-** background inside the domain's outline, y up; the image is width
-** pixels wide and as high as the domain's aspect needs, plus a title
-** line and, on the right, a colour bar (scalars) or a legend (bodies).
+** Particles are drawn in store order over a white background inside
+** the domain's outline, y up; the image is width pixels wide and as
+** high as the domain's aspect needs, plus a title line and, on the
+** right, a colour bar (scalars) or a legend (bodies).
 **
 ** Colouring keys ("by"):
 **   body          categorical colour per body, with a legend

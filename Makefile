@@ -300,7 +300,7 @@ figures: $(BIN)
 # the accuracy-cost study (docs/accuracy.md): each case over its grid of
 # settings, one after the other (timings are taken one run at a time);
 # STUDY_QUICK=1 for a smoke run, STUDY_REPEATS=R for the repeats (default 3)
-STUDIES = bar bar_ppc_cfl disc block concentric concentric_onset debond_front cohesive bounce_friction bounce roll roll_slab friction_work body_patch \
+STUDIES = bar bar_ppc_cfl disc block concentric concentric_onset debond_front cohesive bounce_friction bounce_arm bounce roll roll_slab friction_work body_patch \
           grain_budget piston_pack thermal_explosion d3_bounce ringing
 study: $(BIN)
 	@mkdir -p out/study docs/figures

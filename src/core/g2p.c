@@ -58,7 +58,7 @@ double g2p_affine_energy(const sim *s) {
   stencil st;
   size_t i;
   int a, b;
-  if (cfg->transfer != TRANSFER_APIC || s->faff < 0) return 0;
+  if (!sim_affine(cfg) || s->faff < 0) return 0;
   for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   stencil_geo_init(&geo, &s->g);
   for (i = 0; i < ps->n; i++) {
@@ -192,6 +192,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   const int full = mode == G2P_MOVE, rowlen = stencil_rowlen(kind);
   const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
   const int xp = cfg->transfer == TRANSFER_XPIC, lossy = sim_lossy(cfg);
+  const int spin = cfg->transfer == TRANSFER_SPIN;
   /* the dense grid only through these: loads need not wait for stores */
   const double *restrict gq[DIM], *restrict gf[DIM];
   double *restrict gp[DIM];
@@ -214,7 +215,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     for (a = 0; a < NTENS; a++) C[a] = particles_comp(ps, s->faff, a);
   for (i = i0; i < i1; i++) {
     double x[DIM], vp[DIM], v[DIM] = {0}, ac[DIM] = {0}, nv[DIM];
-    double l[NTENS] = {0}, bm[NTENS] = {0}, dvr[NTENS] = {0};
+    double l[NTENS] = {0}, bm[NTENS] = {0}, dvr[NTENS] = {0}, bmd[NTENS] = {0};
     double aref = 0, aff = 0;
     const body *b = &bd[ps->body[i]];
     const int32_t *slot = shared ? wk->pslot + i * stencil_size(kind) : NULL;
@@ -247,11 +248,19 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
           for (c = 0; c < DIM; c++) l[a * DIM + c] += q[a] * st.dw[c][k];
       if (apic && kind == SHAPE_BSPLINE2)
         for (a = 0; a < DIM; a++)
-          for (c = 0; c < DIM; c++) bm[a * DIM + c] += q[a] * (w * r[c][k]);
+          for (c = 0; c < DIM; c++) {
+            bm[a * DIM + c] += q[a] * (w * r[c][k]);
+            if (spin) bmd[a * DIM + c] += fo[a] * (w * r[c][k]);
+          }
     }
     if (apic) {
       for (a = 0; a < NTENS; a++)
         bm[a] = kind == SHAPE_BSPLINE2 ? bm[a] * Dinv : l[a];
+      if (spin) /* the spin moved by the increment's, as v is by dv */
+        for (a = 0; a < DIM; a++)
+          for (c = 0; c < DIM; c++)
+            bm[a * DIM + c] = a == c ? 0
+                : C[a * DIM + c][i] + 0.5 * Dinv * (bmd[a * DIM + c] - bmd[c * DIM + a]);
       if (b->driven)
         for (a = 0; a < NTENS; a++) bm[a] = 0;
       for (a = 0; a < NTENS; a++) C[a][i] = bm[a];
@@ -268,7 +277,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     }
     for (a = 0; a < DIM; a++) {
       if (b->driven) nv[a] = b->vdrive[a];
-      else if (apic) nv[a] = v[a];
+      else if (apic && !spin) nv[a] = v[a];
       else if (xp) nv[a] = v[a] + ac[a]; /* f holds XPIC's correction c (xpic.c) */
       else nv[a] = flip * (vp[a] + ac[a]) + pic * v[a];
     }
@@ -390,7 +399,7 @@ STENCIL_INLINE void scatter_kind(sim *s, const int kind, const int shared,
 STENCIL_INLINE void g2p_shape(sim *s, const int kind, int mode, size_t i0,
                               size_t i1, int blk, sums *u) {
   const sim_cfg *cfg = &s->cfg;
-  int shared = s->g.nshared > 0, apic = cfg->transfer == TRANSFER_APIC;
+  int shared = s->g.nshared > 0, apic = sim_affine(cfg);
 #define G2PA(SH, MO)                                                     \
   if (apic) g2p_kind(s, kind, SH, MO, 1, i0, i1, blk, u);                \
   else g2p_kind(s, kind, SH, MO, 0, i0, i1, blk, u);
@@ -421,7 +430,7 @@ static void g2p_range(sim *s, int mode, size_t i0, size_t i1, int blk,
 STENCIL_INLINE void scatter_shape(sim *s, const int kind, int split,
                                   size_t i0, size_t i1, int blk) {
   const sim_cfg *cfg = &s->cfg;
-  int shared = s->g.nshared > 0, apic = cfg->transfer == TRANSFER_APIC;
+  int shared = s->g.nshared > 0, apic = sim_affine(cfg);
 #define SCA(SH, AP)                                                      \
   if (split) scatter_kind(s, kind, SH, AP, 1, i0, i1, blk);              \
   else scatter_kind(s, kind, SH, AP, 0, i0, i1, blk);
@@ -534,7 +543,7 @@ STENCIL_INLINE void remap_kind(sim *s, const int kind, const int shared,
   const grid *g = &s->g;
   particles *ps = &s->ps;
   const double dt = s->dt, lp = cfg->lp;
-  const int lossy = sim_lossy(cfg), apic = cfg->transfer == TRANSFER_APIC;
+  const int lossy = sim_lossy(cfg), apic = sim_affine(cfg);
   const double *restrict gp[DIM], *restrict gq[DIM];
   stencil_geo geo;
   box bx;

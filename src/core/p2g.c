@@ -142,7 +142,7 @@ STENCIL_INLINE void p2g_what(sim *s, const int kind, const int split,
                              const int what, size_t i0, size_t i1, int blk,
                              int pass) {
   const sim_cfg *cfg = &s->cfg;
-  int shared = s->g.nshared > 0, apic = cfg->transfer == TRANSFER_APIC;
+  int shared = s->g.nshared > 0, apic = sim_affine(cfg);
   if (shared) {
     if (apic) p2g_kind(s, kind, 1, 1, split, what, i0, i1, blk, pass);
     else p2g_kind(s, kind, 1, 0, split, what, i0, i1, blk, pass);

@@ -72,6 +72,7 @@ void prof_effects(FILE *f, const sim *s) {
   effect(f, "walls", walls > 0, buf);
   effect(f, "periodic wrap", periodic, NULL);
   effect(f, "APIC", s->cfg.transfer == TRANSFER_APIC, NULL);
+  effect(f, "particle spin", s->cfg.transfer == TRANSFER_SPIN, NULL);
   effect(f, "gravity", grav, NULL);
   fprintf(f, "  %-22s %s, %s, %d particles per cell, flip %g\n", "scheme",
           s->cfg.update == UPDATE_MUSL    ? "MUSL"

@@ -244,7 +244,7 @@ int sim_add_body(sim *s, const char *name, int32_t mat, int32_t field) {
 }
 
 const char *const update_names[] = {"usl", "musl", "usavg", NULL};
-const char *const transfer_names[] = {"flip", "apic", "xpic", NULL};
+const char *const transfer_names[] = {"flip", "apic", "xpic", "spin", NULL};
 
 void sim_scheme(const sim *s, char *buf, size_t n) {
   const sim_cfg *c = &s->cfg;
@@ -455,7 +455,6 @@ const char *sim_budget_advice(const sim *s) {
 }
 
 int sim_enable_apic(sim *s) {
-  s->cfg.transfer = TRANSFER_APIC;
   if (s->faff < 0) {
     int c;
     /* in snapshots too: the affine field is half the particle's velocity

@@ -48,8 +48,11 @@ enum wall_rule { WALL_NODE, WALL_PATCH, WALL_COUPLE, WALL_PENALTY, WALL_SPRING,
 ** that is not (sim.fflat), node by node elsewhere */
 enum body_rule { BODY_NODE, BODY_PATCH, BODY_AUTO };
 /* FLIP: the velocity increment blended with PIC by flip; APIC: the
-** grid velocity and an affine velocity field per particle (g2p.c) */
-enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC };
+** grid velocity and an affine velocity field per particle; SPIN: FLIP
+** whose particles also carry a spin, the skew part of APIC's affine
+** field, mapped to the grid as APIC's is and moved by FLIP's increments
+** as the velocity is (g2p.c) */
+enum transfer_kind { TRANSFER_FLIP, TRANSFER_APIC, TRANSFER_XPIC, TRANSFER_SPIN };
 /* their names in mvmpm.sim, in enum order, NULL-terminated (sim.c) */
 extern const char *const transfer_names[];
 /* how contact normals are taken (contact.c): each field's mass or volume
@@ -238,6 +241,12 @@ static inline int sim_lossy(const sim_cfg *cfg) {
   return cfg->transfer != TRANSFER_FLIP || cfg->flip < 1;
 }
 
+/* whether the particles carry an affine field (APIC) or its spin part
+** (SPIN): mapped to the grid as v_p + C_p (x_i - x_p) (p2g.c, g2p.c) */
+static inline int sim_affine(const sim_cfg *cfg) {
+  return cfg->transfer == TRANSFER_APIC || cfg->transfer == TRANSFER_SPIN;
+}
+
 /* whether wall_contact = "auto" takes the patch rule for round bodies at
 ** walls with friction: under pure FLIP on GIMP and B-splines.  Elsewhere
 ** it is the node rule: the patch's normal impulses made energy there (a
@@ -247,7 +256,8 @@ static inline int sim_lossy(const sim_cfg *cfg) {
 ** / 32 cells), and XPIC and the FLIP/PIC blend stop a body's spin in
 ** the transfer, so that the patch's torque buys little (boundary.c) */
 static inline int sim_auto_patch(const sim_cfg *cfg) {
-  return !sim_lossy(cfg) && cfg->shape != SHAPE_LINEAR;
+  const int flip = !sim_lossy(cfg) || (cfg->transfer == TRANSFER_SPIN && cfg->flip == 1);
+  return flip && cfg->shape != SHAPE_LINEAR;
 }
 
 /*
@@ -402,8 +412,8 @@ const pairlaw *sim_law_of(const sim *s, int32_t a, int32_t b);
 double sim_law(const sim *s, int32_t a, int32_t b);
 /* give the particles a bond strength field ("bond"); its index or -1 */
 int sim_enable_bonds(sim *s);
-/* the affine transfer (APIC): registers the particles' "affine" field;
-** 0 or -1 */
+/* the affine transfers (APIC, SPIN; the caller sets cfg.transfer):
+** registers the particles' "affine" field; 0 or -1 */
 int sim_enable_apic(sim *s);
 /* append a particle of body b at x with volume vol; index or -1 */
 long sim_add_particle(sim *s, int32_t b, const double x[DIM],

@@ -445,6 +445,16 @@ int lsim_new(lua_State *L) {
       if (sim_enable_apic(s))
         luaL_error(L, "sim: out of memory for the affine transfer");
     }
+    if (s->cfg.transfer == TRANSFER_SPIN) {
+      /* the spin's increment is taken as APIC takes its matrix on
+      ** B-splines, from the weights (g2p.c) */
+      if (shape != SHAPE_BSPLINE2)
+        luaL_error(L, "sim: transfer = \"spin\" needs shape = \"bspline2\" (the "
+                      "spin's increment is taken from the quadratic B-splines' "
+                      "weights)");
+      if (sim_enable_apic(s))
+        luaL_error(L, "sim: out of memory for the particles' spin");
+    }
     s->cfg.flip = chk_num(L, 1, what, "flip", 1.0, 0, 1, 0);
     s->cfg.cfl = chk_num(L, 1, what, "cfl", 0.25, 0, 1, CHK_OPENLO);
     s->cfg.dt_fixed = chk_num(L, 1, what, "dt", 0, 0, HUGE_VAL, 0);

@@ -248,7 +248,8 @@ static inline int sim_affine(const sim_cfg *cfg) {
 }
 
 /* whether wall_contact = "auto" takes the patch rule for round bodies at
-** walls with friction: under pure FLIP on GIMP and B-splines.  Elsewhere
+** walls with friction: under pure FLIP on GIMP and B-splines, and under
+** "spin" with flip 1 (FLIP's velocities, the spin kept).  Elsewhere
 ** it is the node rule: the patch's normal impulses made energy there (a
 ** disc dropped on a frictional floor, residual -2.5 to -2.8 % of the
 ** energy put in at 8 to 32 cells under B-spline APIC, node by node

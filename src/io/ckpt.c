@@ -194,7 +194,7 @@ static void visit_sim(ckv *v, sim *s) {
   vsame(v, "nbody", s->nbody, "bodies");
   vsame(v, "nfield", s->nfield, "velocity fields");
   vsame(v, "dim", DIM, "dimensions");
-  vsame(v, "transfer", s->cfg.transfer, "as its transfer (0 FLIP, 1 APIC)");
+  vsame(v, "transfer", s->cfg.transfer, "as its transfer (0 FLIP, 1 APIC, 2 XPIC, 3 spin)");
   VI(v, "step", s->step, long);
   VI(v, "started", s->started, int);
   vreal(v, "t", &s->t);

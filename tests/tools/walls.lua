@@ -2,6 +2,19 @@
 -- verification files with dofile (run from the project's root).
 local W = {}
 
+-- The bounce's first flight (scenarios/cylinder_bounce.lua): the disc's
+-- spin averaged over t = 8 .. 16, a sample per time unit (it rings after
+-- the impact), and its x velocity at t = 10 (the restitution's).
+function W.flight1(sim, disc)
+  local sum, n, vx = 0, 0, nil
+  for t = 8, 16 do
+    sim:run(t)
+    sum, n = sum + disc:omega(), n + 1
+    if t == 10 then vx = disc:velocity() end
+  end
+  return sum / n, vx
+end
+
 -- The report's frictionless bounce (scenarios/cylinder_bounce.lua) under
 -- wall rule `rule`, with the scene's parameters o (speed scales the
 -- times): E/E0 - 1 after the first impact (t = 10 at speed 0.1) and after

@@ -9,8 +9,9 @@
 local mvmpm = require "mvmpm"
 local M = {g = 1, R = 0.5, K = 400, H = 0.25}
 
--- every scheme: shape x transfer (APIC only on GIMP and B-splines, as
--- the engine allows), and a FLIP/PIC blend
+-- every scheme: shape x transfer (APIC only on GIMP and B-splines, the
+-- spin transfer only on B-splines, as the engine allows), and a FLIP/PIC
+-- blend
 M.schemes = {
   {shape = "linear", transfer = "flip", flip = 1},
   {shape = "linear", transfer = "flip", flip = 0.99},
@@ -21,6 +22,7 @@ M.schemes = {
   {shape = "bspline2", transfer = "flip", flip = 1},
   {shape = "bspline2", transfer = "apic"},
   {shape = "bspline2", transfer = "xpic"},
+  {shape = "bspline2", transfer = "spin"},
 }
 
 function M.name(sc)

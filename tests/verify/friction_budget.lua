@@ -38,18 +38,20 @@ end
 -- the schemes under which the default wall rule ("auto") is the patch
 -- rule for a round body at a wall with friction (src/core/sim.h)
 local function patched(sc)
-  return sc.transfer == "flip" and (sc.flip or 1) == 1 and sc.shape ~= "linear"
+  return (sc.transfer == "flip" or sc.transfer == "spin") and (sc.flip or 1) == 1
+    and sc.shape ~= "linear"
 end
 
 V.case "sliding disc (mu 0.3, v0 1): friction work against F . slip, budget"
 local at = {}
 for _, sc in ipairs(S.schemes) do
-  local errs, errd = {}, {}
+  local errs, errd, errr = {}, {}, {}
   for k, c in ipairs(cells) do
     local r = S.run {cells = c, scheme = sc, mu = mu, T = 2, n = 40}
     local e = r.e
     local put = e.initial + e.boundary_work
     errd[k] = math.abs(e.dissipated / r.model - 1)
+    errr[k] = math.abs(e.dissipated / r.rigid - 1)
     at[c] = at[c] or {}
     at[c][#at[c] + 1] = e.dissipated / r.m
     V.below(string.format("%s: |residual| / (E0 + W_b), %d cells", S.name(sc), c),
@@ -73,7 +75,20 @@ for _, sc in ipairs(S.schemes) do
            n.e.dissipated / n.model, 1, 0.05)
   end
   V.info(string.format("%s: friction / model - 1, observed order", S.name(sc)), order(errs))
-  if patched(sc) then
+  if patched(sc) and sc.transfer == "spin" then
+    -- per patch, the booked work settles about 3 % above mu N times the
+    -- slip read from the disc's centre and spin (FLIP 1.039 / 1.033 at
+    -- 16 / 24 cells, spin 1.028 / 1.028): the spin transfer is on that
+    -- level from 6 cells (1.025 / 1.025 / 1.032 at 6 / 8 / 12), so what
+    -- must fall is the error against the rigid disc (0.051 / 0.029 /
+    -- 0.0005), and against the model it must stay within 5 %
+    V.info(string.format("%s: the defaults: friction / model - 1, observed order", S.name(sc)), order(errd))
+    for k, c in ipairs(cells) do
+      V.below(string.format("%s: the defaults: |friction / model - 1|, %d cells", S.name(sc), c), errd[k], 0.05)
+    end
+    V.below(string.format("%s: the defaults: |friction / rigid disc's - 1| at %d cells below its value at %d",
+                          S.name(sc), cells[3], cells[1]), errr[3], errr[1])
+  elseif patched(sc) then
     V.info(string.format("%s: the defaults: friction / model - 1, observed order", S.name(sc)), order(errd))
     V.below(string.format("%s: the defaults: |friction / model - 1| at %d cells below its value at %d",
                           S.name(sc), cells[3], cells[1]), errd[3], errd[1])

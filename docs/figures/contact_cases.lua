@@ -14,7 +14,8 @@
 --                        the same runs
 --   contact_onset.png    the concentric cylinders' debond onset over the
 --                        plane-strain Lame value at 25, 35, 50 cells
---                        across the domain, per bond traction
+--                        across the domain, per bond traction, on
+--                        linear hats and B-splines (the default shape)
 --   contact_friction_work.png  a disc thrown along a frictional floor
 --                        (lua/mvmpm/slide.lua): |friction work / the
 --                        rigid disc's - 1| at 8, 16, 32 cells per
@@ -39,8 +40,8 @@ do
     local x, yr, ys = {}, {}, {}
     for _, c in ipairs {8, 16, 32} do
       local th = math.rad(25)
-      local r = I.run {cells = c, deg = 25, mu = 0.5, wall_contact = rule}
-      local s = I.run {cells = c, deg = 30, mu = 0.1, wall_contact = rule}
+      local r = I.run {cells = c, deg = 25, mu = 0.5, wall_contact = rule, shape = "linear"}
+      local s = I.run {cells = c, deg = 30, mu = 0.1, wall_contact = rule, shape = "linear"}
       local ar = 2 / 3 * math.sin(th)
       local sr = 2 * 0.1 * math.cos(math.rad(30)) / I.R
       x[#x + 1] = c
@@ -85,8 +86,9 @@ end
 do
   local K, G, alpha, rate, a, b, sb = 1, 0.5, 1, 4e-4, 0.2, 0.4, 0.005
   local dTc = sb / (lame.unit(K, G, a, b) * alpha)
-  local function onset(n, traction)
+  local function onset(n, traction, shape)
     local sim = mvmpm.sim {domain = {x = {0, 1}, y = {0, 1}}, cell = 1 / n, t_end = 2 * dTc / rate,
+      shape = shape,
       sides = "free", bond_traction = traction, bond_length = traction == "fit" and 0.12 or nil}
     local core = mvmpm.elastic {K = K, G = G, density = 1, alpha = alpha, name = "core"}
     local shell = mvmpm.elastic {K = K, G = G, density = 1, alpha = 0, name = "shell"}
@@ -103,19 +105,21 @@ do
     return first and rate * first / dTc or 0 / 0
   end
   local series = {}
-  for _, tr in ipairs {"mixture", "fit"} do
-    local x, y = {}, {}
-    for _, n in ipairs {25, 35, 50} do
-      local q = onset(n, tr)
-      x[#x + 1], y[#y + 1] = n, q
-      print(string.format("concentric onset %-7s %d cells: onset / Lame %.4f", tr, n, q))
+  for _, shape in ipairs {"linear", "bspline2"} do
+    for _, tr in ipairs {"mixture", "fit"} do
+      local x, y = {}, {}
+      for _, n in ipairs {25, 35, 50} do
+        local q = onset(n, tr, shape)
+        x[#x + 1], y[#y + 1] = n, q
+        print(string.format("concentric onset %-8s %-7s %d cells: onset / Lame %.4f", shape, tr, n, q))
+      end
+      series[#series + 1] = {x = x, y = y, style = "both", label = shape .. ", " .. tr}
     end
-    series[#series + 1] = {x = x, y = y, style = "both", label = "bond_traction = " .. tr}
   end
   series[#series + 1] = {x = {25, 50}, y = {1.03, 1.03}, style = "line", label = "+3 %"}
   series[#series + 1] = {x = {25, 50}, y = {0.97, 0.97}, style = "line", label = "-3 %"}
   mvmpm.plot {file = dir .. "/contact_onset.png",
-              title = "Concentric cylinders: debond onset, linear hats",
+              title = "Concentric cylinders: debond onset per shape and bond traction",
               xlabel = "cells across the domain", ylabel = "onset / Lame onset", series = series}
 end
 print("contact cases: pictures in " .. dir)

@@ -233,7 +233,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
         for (a = 0; a < DIM; a++) { q[a] = gq[a][n]; fo[a] = gf[a][n]; }
       }
       for (a = 0; a < DIM; a++) { v[a] += w * q[a]; ac[a] += w * fo[a]; }
-      if (apic && lossy) { /* the old affine part C r, and dv against r */
+      if (apic && !spin && lossy) { /* the old affine part C r, and dv against r */
         double t = 0, cr[DIM];
         for (a = 0; a < DIM; a++) {
           cr[a] = 0;
@@ -246,12 +246,12 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
       if (full || (apic && kind != SHAPE_BSPLINE2))
         for (a = 0; a < DIM; a++)
           for (c = 0; c < DIM; c++) l[a * DIM + c] += q[a] * st.dw[c][k];
-      if (apic && kind == SHAPE_BSPLINE2)
+      if (spin) /* the increment's moment: W moves by its skew part */
         for (a = 0; a < DIM; a++)
-          for (c = 0; c < DIM; c++) {
-            bm[a * DIM + c] += q[a] * (w * r[c][k]);
-            if (spin) bmd[a * DIM + c] += fo[a] * (w * r[c][k]);
-          }
+          for (c = 0; c < DIM; c++) bmd[a * DIM + c] += fo[a] * (w * r[c][k]);
+      else if (apic && kind == SHAPE_BSPLINE2)
+        for (a = 0; a < DIM; a++)
+          for (c = 0; c < DIM; c++) bm[a * DIM + c] += q[a] * (w * r[c][k]);
     }
     if (apic) {
       for (a = 0; a < NTENS; a++)
@@ -284,7 +284,7 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
     if (lossy) { /* the transfer's change of velocity, booked as work */
       double loss = 0, t = 0;
       if (b->driven) {
-      } else if (apic) {
+      } else if (apic && !spin) {
         /* sum_i S_ip d_i . (u_i + u'_i), d_i = u'_i - u_i - dv_i, with
         ** u_i = v + C r_i, u'_i = v' + C' r_i: |u'|^2 - |u|^2 summed
         ** (the cross terms drop: sum_i S_ip r_i = 0) less dv . (u + u') */
@@ -296,7 +296,10 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
         loss = -0.5 * ps->m[i] * t;
       } else {
         /* d = v' - v - S dv on the mean (v + v') / 2; XPIC: S dv =
-        ** S vL - S v, S v kept by xpic.c in L */
+        ** S vL - S v, S v kept by xpic.c in L.  Spin: the affine terms
+        ** of APIC's sum above cancel exactly for W' = W + skew(D^-1
+        ** sum_i S_ip dv_i r_i^T) (with D = h^2/4, W and W' skew), so
+        ** only the velocity's part is left, FLIP's or the blend's */
         for (a = 0; a < DIM; a++) {
           double sdv = xp ? v[a] - ps->L[a][i] : ac[a];
           t += (nv[a] - vp[a] - sdv) * (vp[a] + nv[a]);

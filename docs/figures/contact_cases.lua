@@ -161,7 +161,8 @@ do
     for _, c in ipairs {8, 16, 32} do
       local r = S.run {cells = c, scheme = {shape = "linear", transfer = "flip", flip = 1}, mu = 0.3,
                        T = 2, n = 40, slab = true, body_contact = rule}
-      local q = I.run {cells = c, deg = 25, mu = 0.5, slab = "driven", body_contact = rule}
+      local q = I.run {cells = c, deg = 25, mu = 0.5, slab = "driven", body_contact = rule,
+                        shape = "linear"}
       local ar = 2 / 3 * math.sin(math.rad(25))
       x[#x + 1] = c
       yw[#yw + 1], yr[#yr + 1] = floor(math.abs(r.e.dissipated / r.rigid - 1)), floor(math.abs(q.a / ar - 1))

@@ -20,7 +20,7 @@ local case = {
   metrics = {{key = "energy", label = "|E/E0 - 1| after 3 bounces"}},
   extra = {"dE"},
   grid = {cells = {8, 12, 16, 24, 32, 48}, shape = {"linear", "gimp", "bspline2"},
-          transfer = {"flip", "apic"}, flip = {1, 0}, update = {"musl", "usl"}},
+          transfer = {"flip", "apic", "spin"}, flip = {1, 0}, update = {"musl", "usl"}},
   baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
   -- PIC only on linear hats; USL only with FLIP (enough to show what each does)
   skip = function(s)

@@ -25,7 +25,7 @@ local case = {
   metrics = {{key = "spin", label = "|omega/omega_rigid - 1|"}},
   extra = {"omega", "omega_rigid", "restitution", "energy_left", "dissipated"},
   grid = {cells = {8, 12, 16, 24, 32, 48}, shape = {"linear", "gimp", "bspline2"},
-          transfer = {"flip", "apic"}, flip = {1, 0}},
+          transfer = {"flip", "apic", "spin"}, flip = {1, 0}},
   baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
   skip = function(s) return s.flip == 0 and s.shape ~= "linear" end,   -- PIC only on linear hats
   run = function(s, clock)

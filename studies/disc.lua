@@ -31,7 +31,7 @@ local case = {
              {key = "spin", label = "|omega/omega_ref - 1|"}},
   extra = {"dL", "omega_mean", "dE"},
   grid = {cells = {8, 12, 16, 24, 32, 48}, shape = {"linear", "gimp", "bspline2"},
-          transfer = {"flip", "apic"}, flip = {1, 0}},
+          transfer = {"flip", "apic", "spin"}, flip = {1, 0}},
   -- the report's setting: 8 cells across, linear hats, FLIP, MUSL
   baseline = {cells = 8, shape = "linear", transfer = "flip", flip = 1, update = "musl"},
   run = function(s, clock)

@@ -25,6 +25,6 @@ return S.main(I.study {
   wall_contact = rule,
   title = "disc on an incline: rolling (25 deg, mu 0.5) and sliding (30 deg, mu 0.1)",
   grid = {cells = {8, 16, 32}, shape = {"linear", "gimp", "bspline2"},
-           transfer = {"flip", "apic"}, ppc = {2, 4}},
+           transfer = {"flip", "apic", "spin"}, ppc = {2, 4}},
   slab = nil,
 })

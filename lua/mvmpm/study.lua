@@ -147,6 +147,7 @@ function S.scheme(s, vary)
   local tr
   if s.transfer == "apic" then tr = "APIC"
   elseif s.transfer == "xpic" then tr = "XPIC"
+  elseif s.transfer == "spin" then tr = "spin"
   elseif s.flip == 1 then tr = "FLIP"
   elseif s.flip == 0 then tr = "PIC"
   else tr = string.format("FLIP%g", s.flip) end
@@ -266,10 +267,14 @@ function S.run(case, opts)
   local t_start = mvmpm.clock()
   print(string.format("study %s: %s (R = %d repeats)", case.name, case.title or "", R))
   for _, s in ipairs(combos(case.grid)) do
-    -- the affine transfer ignores the FLIP fraction: run it once
-    local dup = s.transfer == "apic" and s.flip ~= (case.grid.flip and
-      (type(case.grid.flip) == "table" and case.grid.flip[1] or case.grid.flip) or 1)
-    local refused = s.transfer == "apic" and s.shape == "linear"
+    -- the affine transfer ignores the FLIP fraction: run it once; the
+    -- spin transfer is FLIP's, run with flip 1 only
+    local dup = (s.transfer == "apic" and s.flip ~= (case.grid.flip and
+      (type(case.grid.flip) == "table" and case.grid.flip[1] or case.grid.flip) or 1))
+      or (s.transfer == "spin" and (s.flip or 1) ~= 1)
+    -- what the engine refuses: APIC on linear hats, spin off B-splines
+    local refused = (s.transfer == "apic" and s.shape == "linear")
+      or (s.transfer == "spin" and s.shape ~= "bspline2")
     if not dup and not refused and not (case.skip and case.skip(s)) then
       if s.transfer == "apic" then s.flip = 1 end
       local row = measure(case, s, R)

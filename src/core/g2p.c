@@ -192,7 +192,10 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
   const int full = mode == G2P_MOVE, rowlen = stencil_rowlen(kind);
   const int scatter = mode == G2P_SCATTER || mode == G2P_SCATTER1;
   const int xp = cfg->transfer == TRANSFER_XPIC, lossy = sim_lossy(cfg);
-  const int spin = cfg->transfer == TRANSFER_SPIN;
+  /* apic: 0 none, 1 APIC, 2 the spin transfer (B-splines only), a
+  ** constant in each instantiation (g2p_shape), so no branch on it is
+  ** left in the loops */
+  const int spin = apic == 2;
   /* the dense grid only through these: loads need not wait for stores */
   const double *restrict gq[DIM], *restrict gf[DIM];
   double *restrict gp[DIM];
@@ -254,13 +257,14 @@ STENCIL_INLINE void g2p_kind(sim *s, const int kind, const int shared,
           for (c = 0; c < DIM; c++) bm[a * DIM + c] += q[a] * (w * r[c][k]);
     }
     if (apic) {
-      for (a = 0; a < NTENS; a++)
-        bm[a] = kind == SHAPE_BSPLINE2 ? bm[a] * Dinv : l[a];
       if (spin) /* the spin moved by the increment's, as v is by dv */
         for (a = 0; a < DIM; a++)
           for (c = 0; c < DIM; c++)
             bm[a * DIM + c] = a == c ? 0
                 : C[a * DIM + c][i] + 0.5 * Dinv * (bmd[a * DIM + c] - bmd[c * DIM + a]);
+      else
+        for (a = 0; a < NTENS; a++)
+          bm[a] = kind == SHAPE_BSPLINE2 ? bm[a] * Dinv : l[a];
       if (b->driven)
         for (a = 0; a < NTENS; a++) bm[a] = 0;
       for (a = 0; a < NTENS; a++) C[a][i] = bm[a];
@@ -403,8 +407,11 @@ STENCIL_INLINE void g2p_shape(sim *s, const int kind, int mode, size_t i0,
                               size_t i1, int blk, sums *u) {
   const sim_cfg *cfg = &s->cfg;
   int shared = s->g.nshared > 0, apic = sim_affine(cfg);
+  /* kind is a constant here: off B-splines the spin's instance is dead */
+  const int spin = kind == SHAPE_BSPLINE2 && cfg->transfer == TRANSFER_SPIN;
 #define G2PA(SH, MO)                                                     \
-  if (apic) g2p_kind(s, kind, SH, MO, 1, i0, i1, blk, u);                \
+  if (spin) g2p_kind(s, kind, SH, MO, 2, i0, i1, blk, u);                \
+  else if (apic) g2p_kind(s, kind, SH, MO, 1, i0, i1, blk, u);           \
   else g2p_kind(s, kind, SH, MO, 0, i0, i1, blk, u);
 #define G2PM(SH)                                                         \
   switch (mode) {                                                        \
